@@ -1,0 +1,49 @@
+//! The library's error type; each variant maps to one C status code.
+
+use std::fmt;
+
+/// Why a constructor or a solve failed. The message names the violated condition.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Error {
+    /// An argument is NaN, infinite, negative or out of its documented range.
+    InvalidArgument(String),
+    /// The elastic constants do not give a positive definite in-plane energy.
+    InadmissibleMaterial(String),
+    /// An iterative method stopped without converging.
+    NoConvergence(String),
+    /// The method ran, but its error estimate exceeds the requested tolerance.
+    ToleranceNotMet {
+        /// The error estimate reached.
+        estimate: f64,
+        /// The tolerance asked for.
+        tolerance: f64,
+        /// What limited the accuracy.
+        detail: String,
+    },
+    /// A bug: an internal invariant failed (reported, never unwound across the C ABI).
+    Internal(String),
+}
+
+impl fmt::Display for Error {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Error::InvalidArgument(m) => write!(f, "invalid argument: {m}"),
+            Error::InadmissibleMaterial(m) => write!(f, "inadmissible material: {m}"),
+            Error::NoConvergence(m) => write!(f, "no convergence: {m}"),
+            Error::ToleranceNotMet {
+                estimate,
+                tolerance,
+                detail,
+            } => write!(
+                f,
+                "tolerance not met: error estimate {estimate:.3e} > tolerance {tolerance:.3e} ({detail})"
+            ),
+            Error::Internal(m) => write!(f, "internal error: {m}"),
+        }
+    }
+}
+
+impl std::error::Error for Error {}
+
+/// Shorthand for results of this crate.
+pub type Result<T> = std::result::Result<T, Error>;

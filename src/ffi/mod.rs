@@ -1,0 +1,269 @@
+//! The C ABI. Conventions, after rustls-ffi:
+//! - every fallible function returns an `orthoslip_status`; out-parameters are written only
+//!   on `ORTHOSLIP_OK`, except that a handle out-parameter (`T **out`) is set to NULL first,
+//!   so it is NULL after every failure;
+//! - a failure also stores a readable message in this thread's last-error slot
+//!   (`orthoslip_last_error_message`); nothing else is global or mutable;
+//! - no panic unwinds across the boundary: bodies run under `catch_unwind` and a panic
+//!   becomes `ORTHOSLIP_ERROR_INTERNAL`;
+//! - enum values coming from C are read as integers and validated, never trusted.
+
+#![allow(non_camel_case_types)]
+
+mod contact;
+mod material;
+mod solution;
+
+use std::cell::RefCell;
+use std::ffi::{c_char, c_int};
+use std::panic::{AssertUnwindSafe, catch_unwind};
+
+use crate::contact::Method;
+use crate::error::Error;
+
+pub use contact::*;
+pub use material::*;
+pub use solution::*;
+
+/// Status code returned by every fallible orthoslip function.
+#[repr(C)]
+#[allow(non_camel_case_types)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum orthoslip_status {
+    /// Success: the out-parameters were written.
+    ORTHOSLIP_OK = 0,
+    /// A required pointer argument was NULL.
+    ORTHOSLIP_ERROR_NULL_POINTER = 1,
+    /// A number was NaN, infinite, negative or out of range, or an enum value was invalid.
+    ORTHOSLIP_ERROR_INVALID_ARGUMENT = 2,
+    /// The elastic constants do not give a positive definite in-plane strain energy.
+    ORTHOSLIP_ERROR_INADMISSIBLE_MATERIAL = 3,
+    /// An iterative method stopped without converging.
+    ORTHOSLIP_ERROR_NO_CONVERGENCE = 4,
+    /// The method ran, but its error estimate exceeds the requested tolerance.
+    ORTHOSLIP_ERROR_TOLERANCE_NOT_MET = 5,
+    /// A bug in orthoslip (an internal invariant failed or a panic was caught).
+    ORTHOSLIP_ERROR_INTERNAL = 6,
+}
+
+/// Solution method.
+#[repr(C)]
+#[allow(non_camel_case_types)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum orthoslip_method {
+    /// The cheapest method whose error estimate meets the contact's tolerance.
+    ORTHOSLIP_METHOD_AUTO = 0,
+    /// Goodman's approximation (closed form; neglects the shear traction's effect on p).
+    ORTHOSLIP_METHOD_GOODMAN = 1,
+    /// Spence's approximation (closed form; keeps the slip-zone edge exponent in p).
+    ORTHOSLIP_METHOD_SPENCE = 2,
+    /// The high-order solver of the full coupled equations.
+    ORTHOSLIP_METHOD_COUPLED = 3,
+    /// The paper's linear-complementarity formulation solved by a smoothing Newton method.
+    ORTHOSLIP_METHOD_LCP = 4,
+}
+
+impl From<Method> for orthoslip_method {
+    fn from(m: Method) -> Self {
+        match m {
+            Method::Auto => Self::ORTHOSLIP_METHOD_AUTO,
+            Method::Goodman => Self::ORTHOSLIP_METHOD_GOODMAN,
+            Method::Spence => Self::ORTHOSLIP_METHOD_SPENCE,
+            Method::Coupled => Self::ORTHOSLIP_METHOD_COUPLED,
+            Method::Lcp => Self::ORTHOSLIP_METHOD_LCP,
+        }
+    }
+}
+
+/// An `orthoslip_method` value as received from C: an integer, validated before use
+/// (the header shows it as `orthoslip_method`).
+#[repr(transparent)]
+#[derive(Clone, Copy, Debug)]
+pub struct MethodArg(pub c_int);
+
+/// An `orthoslip_status` value as received from C (the header shows it as `orthoslip_status`).
+#[repr(transparent)]
+#[derive(Clone, Copy, Debug)]
+pub struct StatusArg(pub c_int);
+
+/// A failure on its way out through the ABI.
+pub(crate) struct Failure {
+    status: orthoslip_status,
+    message: String,
+}
+
+impl From<Error> for Failure {
+    fn from(e: Error) -> Self {
+        use orthoslip_status::*;
+        let status = match e {
+            Error::InvalidArgument(_) => ORTHOSLIP_ERROR_INVALID_ARGUMENT,
+            Error::InadmissibleMaterial(_) => ORTHOSLIP_ERROR_INADMISSIBLE_MATERIAL,
+            Error::NoConvergence(_) => ORTHOSLIP_ERROR_NO_CONVERGENCE,
+            Error::ToleranceNotMet { .. } => ORTHOSLIP_ERROR_TOLERANCE_NOT_MET,
+            Error::Internal(_) => ORTHOSLIP_ERROR_INTERNAL,
+        };
+        Failure {
+            status,
+            message: e.to_string(),
+        }
+    }
+}
+
+impl Failure {
+    fn null(name: &str) -> Self {
+        Failure {
+            status: orthoslip_status::ORTHOSLIP_ERROR_NULL_POINTER,
+            message: format!("null pointer: argument `{name}` must not be NULL"),
+        }
+    }
+}
+
+thread_local! {
+    static LAST_ERROR: RefCell<String> = const { RefCell::new(String::new()) };
+}
+
+fn set_last_error(message: String) {
+    LAST_ERROR.with(|slot| *slot.borrow_mut() = message);
+}
+
+/// Runs an ABI body: catches panics, records failures in the last-error slot and turns the
+/// outcome into a status.
+pub(crate) fn run(function: &str, body: impl FnOnce() -> Result<(), Failure>) -> orthoslip_status {
+    let failure = match catch_unwind(AssertUnwindSafe(body)) {
+        Ok(Ok(())) => return orthoslip_status::ORTHOSLIP_OK,
+        Ok(Err(f)) => f,
+        Err(payload) => {
+            let what = payload
+                .downcast_ref::<&str>()
+                .map(|s| s.to_string())
+                .or_else(|| payload.downcast_ref::<String>().cloned())
+                .unwrap_or_default();
+            Failure {
+                status: orthoslip_status::ORTHOSLIP_ERROR_INTERNAL,
+                message: format!("internal error: panic caught ({what})"),
+            }
+        }
+    };
+    set_last_error(format!("{function}: {}", failure.message));
+    failure.status
+}
+
+/// A shared reference from a pointer that must not be NULL.
+///
+/// # Safety
+/// `ptr` must be NULL or point to a live `T`.
+pub(crate) unsafe fn deref<'a, T>(ptr: *const T, name: &str) -> Result<&'a T, Failure> {
+    unsafe { ptr.as_ref() }.ok_or_else(|| Failure::null(name))
+}
+
+/// A mutable reference from a pointer that must not be NULL.
+///
+/// # Safety
+/// `ptr` must be NULL or point to a live `T` not aliased elsewhere during the call.
+pub(crate) unsafe fn deref_mut<'a, T>(ptr: *mut T, name: &str) -> Result<&'a mut T, Failure> {
+    unsafe { ptr.as_mut() }.ok_or_else(|| Failure::null(name))
+}
+
+/// Runs a constructor into a handle out-parameter: `*out` is NULL on every failure and the
+/// new boxed handle on success.
+///
+/// # Safety
+/// `out` must be NULL or valid for one pointer write.
+pub(crate) unsafe fn new_handle<T>(
+    function: &str,
+    out: *mut *mut T,
+    make: impl FnOnce() -> Result<T, Failure>,
+) -> orthoslip_status {
+    run(function, || {
+        if out.is_null() {
+            return Err(Failure::null("out"));
+        }
+        unsafe { *out = std::ptr::null_mut() };
+        let handle = Box::into_raw(Box::new(make()?));
+        unsafe { *out = handle };
+        Ok(())
+    })
+}
+
+/// Frees a handle made by [`new_handle`]; NULL is a no-op.
+///
+/// # Safety
+/// `ptr` must be NULL or a handle from [`new_handle`] not freed before.
+pub(crate) unsafe fn free_handle<T>(ptr: *mut T) {
+    if !ptr.is_null() {
+        // Dropping plain data cannot panic; the guard is belt and braces.
+        let _ = catch_unwind(AssertUnwindSafe(|| drop(unsafe { Box::from_raw(ptr) })));
+    }
+}
+
+/// Writes values through out-pointers after checking all of them for NULL first, so that
+/// nothing is written unless everything can be.
+///
+/// # Safety
+/// Each non-NULL pointer must be valid for one write.
+pub(crate) unsafe fn write_all<T: Copy, const N: usize>(
+    outs: [(*mut T, &str); N],
+    values: [T; N],
+) -> Result<(), Failure> {
+    if let Some((_, name)) = outs.iter().find(|(p, _)| p.is_null()) {
+        return Err(Failure::null(name));
+    }
+    for ((ptr, _), v) in outs.into_iter().zip(values) {
+        unsafe { *ptr = v };
+    }
+    Ok(())
+}
+
+/// Copies this thread's last error message into `buf` and returns its full length in bytes
+/// (without the terminating NUL).
+///
+/// At most `len` bytes are written, always NUL-terminated when `len > 0`, so a message
+/// longer than `len - 1` bytes is truncated; call with `buf = NULL, len = 0` to learn the
+/// length. The message is the one of the last failed orthoslip call on the calling thread
+/// (empty, length 0, if none failed); successful calls leave it unchanged. Never fails.
+///
+/// # Safety
+/// `buf` must be NULL or valid for writing `len` bytes.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn orthoslip_last_error_message(buf: *mut c_char, len: usize) -> usize {
+    catch_unwind(|| {
+        LAST_ERROR.with(|slot| {
+            let msg = slot.borrow();
+            if !buf.is_null() && len > 0 {
+                let n = msg.len().min(len - 1);
+                // SAFETY: the caller provides `len` writable bytes at `buf`.
+                unsafe {
+                    std::ptr::copy_nonoverlapping(msg.as_ptr(), buf.cast::<u8>(), n);
+                    *buf.add(n) = 0;
+                }
+            }
+            msg.len()
+        })
+    })
+    .unwrap_or(0)
+}
+
+/// The name of a status code as a static NUL-terminated string, e.g.
+/// "ORTHOSLIP_ERROR_NULL_POINTER"; "ORTHOSLIP_STATUS_UNKNOWN" for a value outside the enum.
+/// The string is owned by the library and must not be freed.
+#[unsafe(no_mangle)]
+pub extern "C" fn orthoslip_status_string(status: StatusArg) -> *const c_char {
+    let s: &'static std::ffi::CStr = match status.0 {
+        0 => c"ORTHOSLIP_OK",
+        1 => c"ORTHOSLIP_ERROR_NULL_POINTER",
+        2 => c"ORTHOSLIP_ERROR_INVALID_ARGUMENT",
+        3 => c"ORTHOSLIP_ERROR_INADMISSIBLE_MATERIAL",
+        4 => c"ORTHOSLIP_ERROR_NO_CONVERGENCE",
+        5 => c"ORTHOSLIP_ERROR_TOLERANCE_NOT_MET",
+        6 => c"ORTHOSLIP_ERROR_INTERNAL",
+        _ => c"ORTHOSLIP_STATUS_UNKNOWN",
+    };
+    s.as_ptr()
+}
+
+/// The library version ("MAJOR.MINOR.PATCH") as a static NUL-terminated string owned by the
+/// library.
+#[unsafe(no_mangle)]
+pub extern "C" fn orthoslip_version() -> *const c_char {
+    concat!(env!("CARGO_PKG_VERSION"), "\0").as_ptr().cast()
+}

@@ -1,0 +1,288 @@
+//! Goodman's approximation (THEORY.md section 5): the shear traction's effect on the
+//! pressure is dropped (bp = 0 in eq. (10)), so p = p0 = 1 / (pi sqrt(1 - x^2)); the stick
+//! half-width c solves K(sqrt(1 - c^2)) / K(c) = bq / mu, and q follows from eq. (11) on the
+//! stick zone and from eq. (9) on the slip zones.
+
+use std::f64::consts::PI;
+
+use ellip::{elliprf, elliprj};
+
+use crate::error::{Error, Result};
+use crate::problem::{Coupling, Profile, StickEdge};
+
+/// Jacobi theta functions (theta2, theta3, theta4) of a nome 0 <= q <= exp(-pi), summed
+/// until the terms no longer change the sums (at most a handful of terms).
+fn thetas(q: f64) -> (f64, f64, f64) {
+    let (mut s2, mut s3, mut s4) = (1.0, 1.0, 1.0);
+    let mut n = 1.0_f64;
+    loop {
+        let t2 = q.powf(n * (n + 1.0));
+        let t3 = q.powf(n * n);
+        s2 += t2;
+        s3 += 2.0 * t3;
+        s4 += if n as u64 % 2 == 1 { -2.0 } else { 2.0 } * t3;
+        if t3 <= f64::EPSILON * 1e-3 {
+            break;
+        }
+        n += 1.0;
+    }
+    (2.0 * q.powf(0.25) * s2, s3, s4)
+}
+
+/// The stick edge of Goodman's equation K(k') / K(k) = ratio (ratio = bq / mu > 0, k = c) in
+/// closed form through the nome: with q = exp(-pi ratio), k = theta2^2 / theta3^2 and
+/// k'^2 = theta4^4 / theta3^4; for ratio < 1 the complementary nome exp(-pi / ratio) swaps
+/// the roles of k and k'. 1 - c = k'^2 / (1 + k) never cancels.
+pub fn stick_edge(ratio: f64) -> StickEdge {
+    if ratio >= 1.0 {
+        let (t2, t3, t4) = thetas((-PI * ratio).exp());
+        let k = (t2 / t3).powi(2);
+        StickEdge {
+            c: k,
+            one_minus_c: (t4 / t3).powi(4) / (1.0 + k),
+        }
+    } else {
+        let (t2, t3, t4) = thetas((-PI / ratio).exp());
+        let k = (t4 / t3).powi(2);
+        StickEdge {
+            c: k,
+            one_minus_c: (t2 / t3).powi(4) / (1.0 + k),
+        }
+    }
+}
+
+/// Goodman's solution for one coupling (bp is ignored by the model).
+#[derive(Clone, Debug)]
+pub struct GoodmanSolution {
+    bq: f64,
+    mu: f64,
+    edge: StickEdge,
+    /// c^2 and 1 - c^2, kept to full relative accuracy.
+    c2: f64,
+    k2: f64,
+    /// RF(0, c^2, 1) = K(k'), the complementary complete integral.
+    kk: f64,
+}
+
+/// Solves Goodman's approximation. mu = 0 gives c = 0, q = 0.
+pub fn solve(k: &Coupling) -> Result<GoodmanSolution> {
+    if !(k.bq > 0.0 && k.bq.is_finite() && k.mu >= 0.0 && k.mu.is_finite()) {
+        return Err(Error::InvalidArgument(format!(
+            "Goodman needs bq > 0 and mu >= 0, finite (bq = {}, mu = {})",
+            k.bq, k.mu
+        )));
+    }
+    let edge = if k.mu == 0.0 {
+        StickEdge::from_c(0.0)
+    } else {
+        stick_edge(k.bq / k.mu)
+    };
+    let c2 = edge.c * edge.c;
+    let k2 = edge.one_minus_c * (1.0 + edge.c);
+    let kk = if c2 > 0.0 {
+        elliprf(0.0, c2, 1.0).map_err(|e| Error::Internal(format!("RF(0, c^2, 1): {e}")))?
+    } else {
+        f64::INFINITY
+    };
+    Ok(GoodmanSolution {
+        bq: k.bq,
+        mu: k.mu,
+        edge,
+        c2,
+        k2,
+        kk,
+    })
+}
+
+/// The pressure of a flat punch without shear coupling, p0 = 1 / (pi sqrt(1 - x^2)).
+pub fn p0(x: f64) -> f64 {
+    1.0 / (PI * ((1.0 - x) * (1.0 + x)).sqrt())
+}
+
+impl GoodmanSolution {
+    /// q on the stick zone 0 <= x < c by the bounded inversion of eq. (11):
+    /// q = (2x/pi) sqrt(c^2 - x^2) (-bq J1 + mu J2) with
+    /// J1 = PV int_0^c p0(t) / (sqrt(c^2 - t^2) (t^2 - x^2)) dt = RJ(0, 1 - c^2, 1, 1 - x^2) / (3 pi),
+    /// J2 = int_c^1 p0(s) / (sqrt(s^2 - c^2) (s^2 - x^2)) ds
+    ///    = [RF(0, c^2, 1) + n/3 RJ(0, c^2, 1, 1 - n)] / (pi (1 - x^2)), n = (1 - c^2) / (1 - x^2).
+    fn q_stick(&self, x: f64) -> f64 {
+        let d2 = (self.edge.c - x) * (self.edge.c + x);
+        let w = (1.0 - x) * (1.0 + x);
+        let j1 = elliprj(0.0, self.k2, 1.0, w).unwrap_or(f64::NAN) / (3.0 * PI);
+        let n = self.k2 / w;
+        let j2 =
+            (self.kk + n / 3.0 * elliprj(0.0, self.c2, 1.0, d2 / w).unwrap_or(f64::NAN)) / (PI * w);
+        2.0 * x / PI * d2.sqrt() * (self.mu * j2 - self.bq * j1)
+    }
+}
+
+impl Profile for GoodmanSolution {
+    fn edge(&self) -> StickEdge {
+        self.edge
+    }
+
+    fn numerical_error(&self) -> f64 {
+        // The theta series are summed to below rounding: a few ulps of c.
+        8.0 * f64::EPSILON * self.edge.c.max(f64::MIN_POSITIVE)
+    }
+
+    fn tractions(&self, x: f64) -> (f64, f64) {
+        let p = p0(x);
+        let ax = x.abs();
+        let q = if self.mu == 0.0 {
+            0.0
+        } else if ax < self.edge.c {
+            self.q_stick(ax)
+        } else {
+            self.mu * p
+        };
+        (p, if x < 0.0 { -q } else { q })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Goodman's equation by bisection on K from the `ellip` crate (parameter m = k^2): an
+    /// independent route to c.
+    fn c_by_bisection(ratio: f64) -> f64 {
+        let f =
+            |c: f64| ellip::ellipk(1.0 - c * c).unwrap() / ellip::ellipk(c * c).unwrap() - ratio;
+        let (mut lo, mut hi) = (1e-300_f64, 1.0 - 1e-16);
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if f(mid) > 0.0 { lo = mid } else { hi = mid }
+        }
+        0.5 * (lo + hi)
+    }
+
+    #[test]
+    fn theta_form_agrees_with_elliptic_root() {
+        for ratio in [0.3, 0.7, 0.99, 1.0, 1.01, 1.5, 3.0] {
+            let e = stick_edge(ratio);
+            let c = c_by_bisection(ratio);
+            assert!((e.c - c).abs() < 4e-15, "ratio {ratio}: {} vs {c}", e.c);
+            assert!((e.one_minus_c - (1.0 - c)).abs() < 4e-15);
+        }
+    }
+
+    #[test]
+    fn extreme_edges_keep_relative_accuracy() {
+        // ratio = 30: c = 4 q^(1/2) (1 + ...) with q = exp(-30 pi).
+        let e = stick_edge(30.0);
+        let lead = 4.0 * (-15.0 * PI).exp();
+        assert!((e.c / lead - 1.0).abs() < 1e-12);
+        // ratio = 1/30: 1 - c = k'^2/(1+k), k' = 4 q'^(1/2) (...), q' = exp(-30 pi).
+        let e = stick_edge(1.0 / 30.0);
+        let lead = 16.0 * (-30.0 * PI).exp() / 2.0;
+        assert!((e.one_minus_c / lead - 1.0).abs() < 1e-12);
+        assert_eq!(e.c, 1.0);
+    }
+
+    /// H[q](x) = (1/pi) PV int q(t) / (x - t) dt by subtracting q(x) and integrating the
+    /// smooth remainder with a fine composite Gauss-Legendre rule in a variable that
+    /// flattens the edge singularities: an independent check of eq. (11).
+    fn hilbert(f: &dyn Fn(f64) -> f64, x: f64, c: f64) -> f64 {
+        // Split at -c, c and x; substitute t = a + (b - a) (1 - cos th) / 2 on each piece.
+        let mut cuts = [-1.0, -c, x, c, 1.0];
+        cuts.sort_by(f64::total_cmp);
+        let fx = f(x);
+        let (nodes, weights) = gauss_legendre_20();
+        let mut sum = 0.0;
+        for w in cuts.windows(2) {
+            let (a, b) = (w[0], w[1]);
+            if b - a <= 0.0 {
+                continue;
+            }
+            let panels = 200;
+            for j in 0..panels {
+                let (t0, t1) = (
+                    PI * j as f64 / panels as f64,
+                    PI * (j + 1) as f64 / panels as f64,
+                );
+                for (&s, &wt) in nodes.iter().zip(&weights) {
+                    let th = 0.5 * (t0 + t1) + 0.5 * (t1 - t0) * s;
+                    let t = a + (b - a) * (1.0 - th.cos()) / 2.0;
+                    let dt = (b - a) * th.sin() / 2.0 * 0.5 * (t1 - t0) * wt;
+                    sum += (f(t) - fx) / (x - t) * dt;
+                }
+            }
+        }
+        // PV int_{-1}^{1} dt / (x - t) = ln((1 + x) / (1 - x)).
+        (sum + fx * ((1.0 + x) / (1.0 - x)).ln()) / PI
+    }
+
+    fn gauss_legendre_20() -> (Vec<f64>, Vec<f64>) {
+        // Newton on the Legendre recurrence.
+        let n = 20;
+        let mut x = vec![0.0; n];
+        let mut w = vec![0.0; n];
+        for i in 0..n {
+            let mut z = (PI * (i as f64 + 0.75) / (n as f64 + 0.5)).cos();
+            for _ in 0..100 {
+                let (mut p0, mut p1) = (1.0, z);
+                for k in 2..=n {
+                    let p2 = ((2 * k - 1) as f64 * z * p1 - (k - 1) as f64 * p0) / k as f64;
+                    p0 = p1;
+                    p1 = p2;
+                }
+                let dp = n as f64 * (z * p1 - p0) / (z * z - 1.0);
+                let dz = p1 / dp;
+                z -= dz;
+                if dz.abs() < 1e-16 {
+                    let (mut p0, mut p1) = (1.0, z);
+                    for k in 2..=n {
+                        let p2 = ((2 * k - 1) as f64 * z * p1 - (k - 1) as f64 * p0) / k as f64;
+                        p0 = p1;
+                        p1 = p2;
+                    }
+                    let dp = n as f64 * (z * p1 - p0) / (z * z - 1.0);
+                    w[i] = 2.0 / ((1.0 - z * z) * dp * dp);
+                    break;
+                }
+            }
+            x[i] = z;
+        }
+        (x, w)
+    }
+
+    #[test]
+    fn shear_satisfies_eq_11_on_the_stick_zone() {
+        let k = Coupling {
+            bp: 0.1,
+            bq: 0.2857142857142857,
+            mu: 0.3,
+        };
+        let s = solve(&k).unwrap();
+        let c = s.edge().c;
+        assert!(c > 0.2 && c < 0.9);
+        let q = |t: f64| s.tractions(t).1;
+        for i in 1..10 {
+            let x = c * (i as f64 / 10.0 - 0.03);
+            let h = hilbert(&q, x, c);
+            let r = h + k.bq * p0(x);
+            assert!(r.abs() < 1e-9 * k.bq * p0(x), "x = {x}: residual {r}");
+        }
+        // Continuity at the stick edge and the friction bound.
+        let below = s.tractions(c * (1.0 - 1e-10)).1;
+        assert!((below - k.mu * p0(c)).abs() < 1e-4 * k.mu * p0(c));
+        for i in 0..50 {
+            let x = c * i as f64 / 50.0;
+            let (p, q) = s.tractions(x);
+            assert!(q.abs() <= k.mu * p * (1.0 + 1e-12));
+        }
+    }
+
+    #[test]
+    fn frictionless_limit() {
+        let s = solve(&Coupling {
+            bp: 0.2,
+            bq: 0.3,
+            mu: 0.0,
+        })
+        .unwrap();
+        assert_eq!(s.edge().c, 0.0);
+        assert_eq!(s.tractions(0.5).1, 0.0);
+    }
+}

@@ -1,0 +1,33 @@
+//! # orthoslip
+//!
+//! Contact tractions of a rigid flat-ended punch pressed into an orthotropic elastic
+//! half-plane with Coulomb friction (partial slip), after Shen et al. (the paper in
+//! `shared/paper`) and the project's THEORY notes. The Rust core lives in the modules below;
+//! the C ABI in [`ffi`] wraps it and is the only place that deals with raw pointers.
+//!
+//! ```
+//! use orthoslip::{Contact, Material, Method};
+//!
+//! let ply = Material::plane_stress(181e9, 10.3e9, 7.17e9, 0.28).unwrap();
+//! let mut contact = Contact::new(ply);
+//! contact.set_friction(0.3).unwrap();
+//! contact.set_method(Method::Goodman);
+//! let s = contact.solve().unwrap();
+//! let (p, q) = s.tractions(0.5);
+//! assert!(s.c() > 0.0 && s.c() < 1.0 && p > 0.0 && q.is_finite());
+//! ```
+
+pub mod contact;
+pub mod error;
+pub mod goodman;
+pub mod material;
+pub mod problem;
+// solver modules:
+pub mod quadrature;
+
+pub mod ffi;
+
+pub use contact::{Contact, Method, Solution};
+pub use error::{Error, Result};
+pub use material::{Effective, Green, Material};
+pub use problem::{Coupling, Profile, StickEdge};
