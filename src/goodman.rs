@@ -188,7 +188,7 @@ mod tests {
         let mut cuts = [-1.0, -c, x, c, 1.0];
         cuts.sort_by(f64::total_cmp);
         let fx = f(x);
-        let (nodes, weights) = gauss_legendre_20();
+        let (nodes, weights) = crate::quadrature::gauss_legendre(20);
         let mut sum = 0.0;
         for w in cuts.windows(2) {
             let (a, b) = (w[0], w[1]);
@@ -211,40 +211,6 @@ mod tests {
         }
         // PV int_{-1}^{1} dt / (x - t) = ln((1 + x) / (1 - x)).
         (sum + fx * ((1.0 + x) / (1.0 - x)).ln()) / PI
-    }
-
-    fn gauss_legendre_20() -> (Vec<f64>, Vec<f64>) {
-        // Newton on the Legendre recurrence.
-        let n = 20;
-        let mut x = vec![0.0; n];
-        let mut w = vec![0.0; n];
-        for i in 0..n {
-            let mut z = (PI * (i as f64 + 0.75) / (n as f64 + 0.5)).cos();
-            for _ in 0..100 {
-                let (mut p0, mut p1) = (1.0, z);
-                for k in 2..=n {
-                    let p2 = ((2 * k - 1) as f64 * z * p1 - (k - 1) as f64 * p0) / k as f64;
-                    p0 = p1;
-                    p1 = p2;
-                }
-                let dp = n as f64 * (z * p1 - p0) / (z * z - 1.0);
-                let dz = p1 / dp;
-                z -= dz;
-                if dz.abs() < 1e-16 {
-                    let (mut p0, mut p1) = (1.0, z);
-                    for k in 2..=n {
-                        let p2 = ((2 * k - 1) as f64 * z * p1 - (k - 1) as f64 * p0) / k as f64;
-                        p0 = p1;
-                        p1 = p2;
-                    }
-                    let dp = n as f64 * (z * p1 - p0) / (z * z - 1.0);
-                    w[i] = 2.0 / ((1.0 - z * z) * dp * dp);
-                    break;
-                }
-            }
-            x[i] = z;
-        }
-        (x, w)
     }
 
     #[test]
