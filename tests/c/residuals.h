@@ -1,0 +1,218 @@
+/* Checks of a solved contact against the boundary-value problem of THEORY.md section 3
+ * (paper eqs. (9)-(11)), by GSL quadrature of the library's own p and q (valid C11 and C++17):
+ * - (E1) C PV int p(t)/(x-t) dt - A q(x) = 0 on |x| < 1 (paper eq. (10)), relative to the
+ *   larger of the two terms;
+ * - (E2) B PV int q(t)/(x-t) dt + A p(x) = 0 on |x| < c (paper eq. (11)), relative to A p(x);
+ * - int p = 1, int q = 0;
+ * - friction: p > 0, p even, q odd, |q| <= mu p on the stick zone, q = mu p sgn x on the slip
+ *   zones (so q > 0 for x > c);
+ * - slip direction: J(x) = int_c^x (bq p + H[q]) dt >= 0 for c < x < 1, H[q] = PV/pi.
+ * A, B, C are the closed forms of elastic.h, not the library's. */
+#ifndef ORTHOSLIP_TEST_RESIDUALS_H
+#define ORTHOSLIP_TEST_RESIDUALS_H
+
+#include <math.h>
+#include <stdlib.h>
+
+#include <gsl/gsl_errno.h>
+#include <gsl/gsl_integration.h>
+
+#include "check.h"
+#include "elastic.h"
+#include "hilbert.h"
+
+enum {
+    RESIDUAL_E1 = 1,
+    RESIDUAL_E2 = 2,
+    RESIDUAL_INTEGRALS = 4,
+    RESIDUAL_FRICTION = 8,
+    RESIDUAL_SLIP_DIRECTION = 16
+};
+
+#define RESIDUAL_TOLERANCE 1e-8
+
+/* Largest deviations met over all cases. */
+typedef struct {
+    double e1, e2, int_p, int_q, stick_ratio, slip_direction_min;
+    int cases, quad_failures, last_quad_failure;
+} residual_summary;
+
+static inline residual_summary residual_summary_new(void)
+{
+    residual_summary s;
+    s.e1 = s.e2 = s.int_p = s.int_q = s.stick_ratio = 0.0;
+    s.slip_direction_min = INFINITY;
+    s.cases = s.quad_failures = s.last_quad_failure = 0;
+    return s;
+}
+
+static inline void solution_tractions_at(const void *ctx, double x, double *p, double *q)
+{
+    CHECK_OK(orthoslip_solution_tractions((const orthoslip_solution *)ctx, &x, 1, p, q));
+}
+
+/* Points per half of a zone: 10 (20 per zone), 2 with ORTHOSLIP_TEST_QUICK set (valgrind). */
+static inline int residual_points(void)
+{
+    return getenv("ORTHOSLIP_TEST_QUICK") ? 2 : 10;
+}
+
+/* The k-th of 2n points inside (lo, hi) mirrored to both signs: +-(lo + (hi-lo)(j+1/2)/n). */
+static inline double zone_point(double lo, double hi, int k, int n)
+{
+    double x = lo + (hi - lo) * ((k % n) + 0.5) / n;
+    return k < n ? x : -x;
+}
+
+static inline void check_e2(hilbert_quad *h, const traction_field *f,
+                            const reference_constants *k, residual_summary *sum)
+{
+    int i, n = residual_points();
+    for (i = 0; i < 2 * n; i++) {
+        double x = zone_point(0.0, f->c, i, n);
+        double p = field_value(f, FIELD_P, x);
+        double pv = field_principal_value(h, f, FIELD_Q, x);
+        double r = fabs(k->b * pv + k->a * p) / fabs(k->a * p);
+        if (r > sum->e2) sum->e2 = r;
+        CHECK_LE(r, RESIDUAL_TOLERANCE);
+    }
+}
+
+static inline void check_e1(hilbert_quad *h, const traction_field *f,
+                            const reference_constants *k, residual_summary *sum)
+{
+    int i, zone, n = residual_points();
+    for (zone = 0; zone < 2; zone++) {
+        for (i = 0; i < 2 * n; i++) {
+            double x = zone == 0 ? zone_point(0.0, f->c, i, n) : zone_point(f->c, 1.0, i, n);
+            double q = field_value(f, FIELD_Q, x);
+            double term_p = k->c * field_principal_value(h, f, FIELD_P, x);
+            double term_q = k->a * q;
+            double r = fabs(term_p - term_q) / fmax(fabs(term_p), fabs(term_q));
+            if (r > sum->e1) sum->e1 = r;
+            CHECK_LE(r, RESIDUAL_TOLERANCE);
+        }
+    }
+}
+
+static inline void check_integrals(hilbert_quad *h, const traction_field *f, double mu,
+                                   residual_summary *sum)
+{
+    double dp = fabs(field_integral(h, f, FIELD_P) - 1.0);
+    double dq = fabs(field_integral(h, f, FIELD_Q));
+    if (dp > sum->int_p) sum->int_p = dp;
+    if (dq > sum->int_q) sum->int_q = dq;
+    CHECK_LE(dp, 1e-10);
+    CHECK_LE(dq, 1e-10 * mu + 1e-15);
+}
+
+/* Pointwise friction law and symmetry on a grid and next to the stick edges. */
+static inline void check_friction(const traction_field *f, double mu, residual_summary *sum)
+{
+    const int n = 400;
+    int i;
+    for (i = 0; i < n + 4; i++) {
+        double x = i < n ? -1.0 + 2.0 * (i + 0.5) / n
+                         : f->c * (i % 2 ? 1.0 + 1e-6 : 1.0 - 1e-6) * (i < n + 2 ? 1.0 : -1.0);
+        double p, q, pm, qm, sx = x > 0 ? 1.0 : -1.0;
+        if (!(fabs(x) < 1.0)) continue;
+        f->eval(f->ctx, x, &p, &q);
+        f->eval(f->ctx, -x, &pm, &qm);
+        CHECK(p > 0.0 && isfinite(p) && isfinite(q));
+        CHECK_LE(fabs(pm - p), 1e-12 * p);
+        CHECK_LE(fabs(qm + q), 1e-12 * (fabs(q) + mu * p));
+        if (fabs(x) < f->c) {
+            double ratio = fabs(q) / (mu * p);
+            if (ratio > sum->stick_ratio) sum->stick_ratio = ratio;
+            CHECK_LE(fabs(q), mu * p * (1.0 + 1e-10));
+        } else if (fabs(x) > f->c) {
+            CHECK_LE(fabs(q - mu * p * sx), 1e-12 * mu * p);
+            if (x > 0.0 && mu > 0.0) CHECK(q > 0.0);
+        }
+    }
+}
+
+/* bq p(t) + H[q](t) for c < t < 1. */
+static inline double slip_rate(hilbert_quad *h, const traction_field *f, double bq, double t)
+{
+    return bq * field_value(f, FIELD_P, t) + field_principal_value(h, f, FIELD_Q, t) / TEST_PI;
+}
+
+/* J(x_j) >= 0 at x_j = c + 0.95 (1-c) (j/m)^2, j = 1..m, by 8-point Gauss-Legendre panels
+ * (graded towards c, where the integrand behaves like (t - c)^g). */
+static inline void check_slip_direction(hilbert_quad *h, const traction_field *f, double bq,
+                                        residual_summary *sum)
+{
+    const int m = residual_points() < 10 ? 2 : 8;
+    gsl_integration_glfixed_table *gl = gsl_integration_glfixed_table_alloc(8);
+    double j_sum = 0.0, j_abs = 0.0, prev = f->c;
+    int j;
+    size_t node;
+    for (j = 1; j <= m; j++) {
+        double s = (double)j / m, next = f->c + 0.95 * (1.0 - f->c) * s * s;
+        for (node = 0; node < 8; node++) {
+            double t, w, v;
+            gsl_integration_glfixed_point(prev, next, node, &t, &w, gl);
+            v = slip_rate(h, f, bq, t);
+            j_sum += w * v;
+            j_abs += w * fabs(v);
+        }
+        if (j_sum / j_abs < sum->slip_direction_min) sum->slip_direction_min = j_sum / j_abs;
+        CHECK_LE(-1e-10 * j_abs, j_sum);
+        prev = next;
+    }
+    gsl_integration_glfixed_table_free(gl);
+}
+
+/* Solves material m with friction mu by method and runs the checks in mask; g is the edge
+ * exponent of the method's p (1/2 for Goodman, else 1/2 - arctan(bp mu)/pi). */
+static inline void check_residuals(const test_material *m, double mu, orthoslip_method method,
+                                   int mask, residual_summary *sum)
+{
+    reference_constants k = reference_constants_of(m);
+    orthoslip_contact *contact = test_contact_new(m, mu, method);
+    orthoslip_solution *s = NULL;
+    hilbert_quad h = hilbert_quad_new();
+    traction_field f;
+    double bp = k.a / (TEST_PI * k.c), bq = k.a / (TEST_PI * k.b);
+    CHECK_OK(orthoslip_contact_solve(contact, &s));
+    printf("%s, mu = %g:\n", m->name, mu);
+    fflush(stdout);
+    f.eval = solution_tractions_at;
+    f.ctx = s;
+    CHECK_OK(orthoslip_solution_stick_half_width(s, &f.c));
+    f.g = method == ORTHOSLIP_METHOD_GOODMAN ? 0.5 : 0.5 - atan(bp * mu) / TEST_PI;
+    if (mask & RESIDUAL_INTEGRALS) check_integrals(&h, &f, mu, sum);
+    if (mask & RESIDUAL_FRICTION) check_friction(&f, mu, sum);
+    if (mask & RESIDUAL_E2) check_e2(&h, &f, &k, sum);
+    if (mask & RESIDUAL_E1) check_e1(&h, &f, &k, sum);
+    if (mask & RESIDUAL_SLIP_DIRECTION) check_slip_direction(&h, &f, bq, sum);
+    sum->quad_failures += h.failures;
+    if (h.failures) sum->last_quad_failure = h.last_failure;
+    sum->cases++;
+    hilbert_quad_free(&h);
+    orthoslip_solution_free(s);
+    orthoslip_contact_free(contact);
+}
+
+/* The whole program: every test material with mu = 0.1, 0.3 and 1 by method, checks in mask;
+ * prints the largest deviations. */
+static inline int residual_program(const char *program, orthoslip_method method, int mask)
+{
+    static const double frictions[] = {0.1, 0.3, 1.0};
+    size_t n_mat, i, j;
+    const test_material *mats = test_materials(&n_mat);
+    residual_summary s = residual_summary_new();
+    gsl_set_error_handler_off();
+    for (i = 0; i < n_mat; i++)
+        for (j = 0; j < sizeof frictions / sizeof frictions[0]; j++)
+            check_residuals(&mats[i], frictions[j], method, mask, &s);
+    printf("%s: %d cases: max rel. residual (E1) %.3e, (E2) %.3e; max |int p - 1| %.3e, "
+           "|int q| %.3e; max |q|/(mu p) on stick %.6f; min J/int|.| on slip %.3e; "
+           "%d GSL calls without GSL_SUCCESS (last: %s)\n",
+           program, s.cases, s.e1, s.e2, s.int_p, s.int_q, s.stick_ratio, s.slip_direction_min,
+           s.quad_failures, gsl_strerror(s.last_quad_failure));
+    return 0;
+}
+
+#endif
