@@ -1,0 +1,376 @@
+//! The install-and-consume route of the README, end to end: CMake builds this crate (through
+//! cargo) and installs it into a temporary prefix; `c_examples/` is then configured and built
+//! as an outside project against that prefix, once with the shared and once with the static
+//! library (the second time after moving the prefix, which checks that the package is
+//! relocatable); a C consumer is built through pkg-config; the Python ctypes script runs.
+//! Every consumer must print the same stick half-width `c` and the same p, q table.
+//!
+//! Needs cmake, C, C++ and Fortran compilers, pkg-config, python3 and binutils. A missing
+//! tool fails the test with what to install, unless ORTHOSLIP_SKIP_PACKAGING=1.
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::time::Instant;
+
+const SKIP_VAR: &str = "ORTHOSLIP_SKIP_PACKAGING";
+const VERSION: &str = env!("CARGO_PKG_VERSION");
+const SONAME: &str = "liborthoslip.so.0";
+/// Points in the p, q table each example prints.
+const TABLE_ROWS: usize = 21;
+/// Agreement required between consumers (they all call the same library).
+const TOLERANCE: f64 = 1e-12;
+
+/// A command with LD_LIBRARY_PATH removed: `cargo test` points it at target/<profile>/deps,
+/// which holds another liborthoslip.so that must not stand in for the installed one.
+fn command(program: impl AsRef<std::ffi::OsStr>) -> Command {
+    let mut cmd = Command::new(program);
+    cmd.env_remove("LD_LIBRARY_PATH");
+    cmd
+}
+
+fn describe(cmd: &Command) -> String {
+    let mut words: Vec<String> = cmd
+        .get_envs()
+        .filter_map(|(k, v)| v.map(|v| format!("{}={}", k.to_string_lossy(), v.to_string_lossy())))
+        .collect();
+    words.push(cmd.get_program().to_string_lossy().into_owned());
+    words.extend(cmd.get_args().map(|a| a.to_string_lossy().into_owned()));
+    let mut line = words.join(" ");
+    if let Some(dir) = cmd.get_current_dir() {
+        line = format!("(cd {} && {line})", dir.display());
+    }
+    line
+}
+
+/// Runs `cmd`, printing it and its output; panics unless it exits successfully. Returns stdout.
+fn run(cmd: &mut Command) -> String {
+    let line = describe(cmd);
+    println!("$ {line}");
+    let start = Instant::now();
+    let out = cmd
+        .output()
+        .unwrap_or_else(|e| panic!("cannot start `{line}`: {e}"));
+    let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    print!("{stdout}");
+    if !stderr.is_empty() {
+        println!("[stderr]\n{stderr}");
+    }
+    println!("[{:.1} s, {}]", start.elapsed().as_secs_f64(), out.status);
+    assert!(out.status.success(), "`{line}` failed with {}", out.status);
+    stdout
+}
+
+/// Tools the route needs that are not on PATH, with the Debian package providing each.
+fn missing_tools() -> Vec<String> {
+    let env_or = |var: &str, default: &str| std::env::var(var).unwrap_or_else(|_| default.into());
+    let tools = [
+        (env_or("CC", "cc"), "gcc"),
+        (env_or("CXX", "c++"), "g++"),
+        (env_or("FC", "gfortran"), "gfortran"),
+        ("cmake".into(), "cmake"),
+        ("pkg-config".into(), "pkg-config"),
+        ("python3".into(), "python3"),
+        ("readelf".into(), "binutils"),
+        ("ldd".into(), "libc-bin"),
+    ];
+    tools
+        .into_iter()
+        .filter(|(tool, _)| {
+            !Command::new(tool)
+                .arg("--version")
+                .output()
+                .is_ok_and(|o| o.status.success())
+        })
+        .map(|(tool, package)| format!("{tool} (Debian package {package})"))
+        .collect()
+}
+
+fn readelf_dynamic(file: &Path) -> String {
+    run(command("readelf").arg("-d").arg(file))
+}
+
+/// The value printed after `label` at the start of a line of `output`.
+fn labelled(consumer: &str, output: &str, label: &str) -> f64 {
+    let value = output
+        .lines()
+        .find_map(|l| l.strip_prefix(label))
+        .unwrap_or_else(|| panic!("{consumer}: no line starting with {label:?}"));
+    value
+        .trim()
+        .parse()
+        .unwrap_or_else(|e| panic!("{consumer}: cannot parse {label}{value:?}: {e}"))
+}
+
+/// What a consumer printed that every consumer must agree on.
+struct SceneOutput {
+    consumer: String,
+    c: f64,
+    table: Vec<[f64; 3]>,
+}
+
+fn parse_scene(consumer: &str, output: &str) -> SceneOutput {
+    let c = labelled(consumer, output, "c = ");
+    let one_minus_c = labelled(consumer, output, "1 - c = ");
+    assert!(c > 0.0 && c < 1.0, "{consumer}: c = {c} outside (0, 1)");
+    assert!(
+        (c + one_minus_c - 1.0).abs() <= 4.0 * f64::EPSILON,
+        "{consumer}: c = {c} and 1 - c = {one_minus_c} do not add up to 1"
+    );
+    assert!(
+        output.lines().any(|l| l.starts_with("method = ")),
+        "{consumer}: no method line"
+    );
+    let table: Vec<[f64; 3]> = output
+        .lines()
+        .filter_map(|l| {
+            let v: Vec<f64> = l
+                .split_whitespace()
+                .map(str::parse)
+                .collect::<Result<_, _>>()
+                .ok()?;
+            <[f64; 3]>::try_from(v).ok()
+        })
+        .collect();
+    assert_eq!(table.len(), TABLE_ROWS, "{consumer}: p, q table rows");
+    SceneOutput {
+        consumer: consumer.into(),
+        c,
+        table,
+    }
+}
+
+fn assert_close(what: &str, reference: f64, value: f64) {
+    assert!(
+        (value - reference).abs() <= TOLERANCE * reference.abs().max(1.0),
+        "{what}: {value:e} differs from the reference {reference:e}"
+    );
+}
+
+fn assert_needs_soname(exe: &Path) {
+    let dynamic = readelf_dynamic(exe);
+    assert!(
+        dynamic.contains(&format!("Shared library: [{SONAME}]")),
+        "{} does not record {SONAME}",
+        exe.display()
+    );
+}
+
+fn assert_static(exe: &Path) {
+    let dynamic = readelf_dynamic(exe);
+    assert!(
+        !dynamic.contains("liborthoslip"),
+        "{} needs a shared liborthoslip although linked statically",
+        exe.display()
+    );
+}
+
+/// `ldd` resolves liborthoslip.so.0 of `exe` (run with `lib_path` as LD_LIBRARY_PATH if given)
+/// to the installed file in `libdir`.
+fn assert_resolves_into(exe: &Path, libdir: &Path, lib_path: Option<&Path>) {
+    let mut ldd = command("ldd");
+    ldd.arg(exe);
+    if let Some(dir) = lib_path {
+        ldd.env("LD_LIBRARY_PATH", dir);
+    }
+    let out = run(&mut ldd);
+    let expected = format!("{SONAME} => {}", libdir.join(SONAME).display());
+    assert!(
+        out.contains(&expected),
+        "{}: expected `{expected}` in ldd output",
+        exe.display()
+    );
+}
+
+fn fresh_dir(dir: &Path) {
+    if dir.exists() {
+        std::fs::remove_dir_all(dir).unwrap();
+    }
+}
+
+/// Configures and builds c_examples against `prefix`; returns the build directory.
+fn build_examples(source: &Path, work: &Path, prefix: &Path, static_link: bool) -> PathBuf {
+    let build = work.join(if static_link {
+        "examples-static"
+    } else {
+        "examples-shared"
+    });
+    fresh_dir(&build);
+    let configure = run(command("cmake")
+        .arg("-S")
+        .arg(source.join("c_examples"))
+        .arg("-B")
+        .arg(&build)
+        .arg(format!("-DCMAKE_PREFIX_PATH={}", prefix.display()))
+        .arg(format!(
+            "-DORTHOSLIP_EXAMPLES_STATIC={}",
+            if static_link { "ON" } else { "OFF" }
+        )));
+    let found = format!(
+        "orthoslip {VERSION} from {}",
+        prefix.join("lib/cmake/orthoslip").display()
+    );
+    assert!(
+        configure.contains(&found),
+        "configure did not report `{found}`"
+    );
+    run(command("cmake")
+        .arg("--build")
+        .arg(&build)
+        .arg("--parallel")
+        .arg("2"));
+    build
+}
+
+#[test]
+fn install_and_consume() {
+    if std::env::var(SKIP_VAR).as_deref() == Ok("1") {
+        println!("packaging test SKIPPED ({SKIP_VAR}=1)");
+        return;
+    }
+    let missing = missing_tools();
+    assert!(
+        missing.is_empty(),
+        "the packaging test needs: {}. Install them (Debian: apt-get install cmake g++ gfortran \
+         pkg-config python3 binutils) or set {SKIP_VAR}=1 to skip this test",
+        missing.join(", ")
+    );
+    let total = Instant::now();
+    let source = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let work = Path::new(env!("CARGO_TARGET_TMPDIR")).join("packaging");
+    // The CMake build tree (with cargo's own target directory) is kept between runs so that
+    // only the first run pays for a cold cargo build; everything else starts fresh.
+    let build = work.join("build");
+    let prefix = work.join("prefix");
+    let moved = work.join("prefix-moved");
+    fresh_dir(&prefix);
+    fresh_dir(&moved);
+
+    // 1. Root project: configure, build (cargo build --release), install.
+    let mut configure = command("cmake");
+    configure.arg("-S").arg(source).arg("-B").arg(&build);
+    if let Some(cargo) = std::env::var_os("CARGO") {
+        configure.arg(format!(
+            "-DCARGO_EXECUTABLE={}",
+            Path::new(&cargo).display()
+        ));
+    }
+    run(&mut configure);
+    run(command("cmake").arg("--build").arg(&build));
+    run(command("cmake")
+        .arg("--install")
+        .arg(&build)
+        .arg("--prefix")
+        .arg(&prefix));
+
+    let libdir = prefix.join("lib");
+    let real = format!("liborthoslip.so.{VERSION}");
+    assert!(libdir.join(&real).is_file(), "{real} not installed");
+    for (link, target) in [(SONAME, real.as_str()), ("liborthoslip.so", SONAME)] {
+        let read = std::fs::read_link(libdir.join(link))
+            .unwrap_or_else(|e| panic!("{link} is not an installed symlink: {e}"));
+        assert_eq!(read, Path::new(target), "{link} points elsewhere");
+    }
+    assert!(readelf_dynamic(&libdir.join(&real)).contains(&format!("soname: [{SONAME}]")));
+    assert!(libdir.join("liborthoslip.a").is_file());
+    for file in ["orthoslipConfig.cmake", "orthoslipConfigVersion.cmake"] {
+        assert!(
+            libdir.join("cmake/orthoslip").join(file).is_file(),
+            "{file} not installed"
+        );
+    }
+    assert_eq!(
+        std::fs::read(prefix.join("include/orthoslip.h")).unwrap(),
+        std::fs::read(source.join("include/orthoslip.h")).unwrap(),
+        "installed header differs from include/orthoslip.h"
+    );
+
+    let mut scenes = Vec::new();
+    let consumers = ["c", "cpp", "f90"];
+
+    // 2. Outside project, shared library, at the install prefix.
+    let shared = build_examples(source, &work, &prefix, false);
+    for name in consumers {
+        let exe = shared.join(format!("default_scene_{name}"));
+        assert_needs_soname(&exe);
+        assert_resolves_into(&exe, &libdir, None);
+        scenes.push(parse_scene(
+            &format!("{name} shared"),
+            &run(&mut command(&exe)),
+        ));
+    }
+
+    // 3. The prefix moved elsewhere: static linking through the CMake package, a pkg-config
+    // build and Python find everything relative to the new location.
+    std::fs::rename(&prefix, &moved).unwrap();
+    let libdir = moved.join("lib");
+    let statik = build_examples(source, &work, &moved, true);
+    for name in consumers {
+        let exe = statik.join(format!("default_scene_{name}"));
+        assert_static(&exe);
+        scenes.push(parse_scene(
+            &format!("{name} static"),
+            &run(&mut command(&exe)),
+        ));
+    }
+
+    let pc_path = libdir.join("pkgconfig");
+    let pkg_config = |args: &[&str]| {
+        run(command("pkg-config")
+            .env("PKG_CONFIG_PATH", &pc_path)
+            .args(args)
+            .arg("orthoslip"))
+    };
+    assert_eq!(pkg_config(&["--modversion"]).trim(), VERSION);
+    let static_libs = pkg_config(&["--static", "--libs"]);
+    for lib in ["-lpthread", "-ldl", "-lm"] {
+        assert!(static_libs.contains(lib), "Libs.private lacks {lib}");
+    }
+    let flags = pkg_config(&["--cflags", "--libs"]);
+    let exe = work.join("default_scene_pkgconfig");
+    let cc = std::env::var("CC").unwrap_or_else(|_| "cc".into());
+    run(command(cc)
+        .arg("-std=c11")
+        .arg(source.join("c_examples/default_scene.c"))
+        .arg("-o")
+        .arg(&exe)
+        .args(flags.split_whitespace()));
+    assert_needs_soname(&exe);
+    assert_resolves_into(&exe, &libdir, Some(&libdir));
+    scenes.push(parse_scene(
+        "c pkg-config",
+        &run(command(&exe).env("LD_LIBRARY_PATH", &libdir)),
+    ));
+
+    let script = source.join("c_examples/default_scene.py");
+    let lib = libdir.join(SONAME);
+    scenes.push(parse_scene(
+        "python argv",
+        &run(command("python3").arg(&script).arg(&lib)),
+    ));
+    scenes.push(parse_scene(
+        "python ORTHOSLIP_LIB",
+        &run(command("python3").arg(&script).env("ORTHOSLIP_LIB", &lib)),
+    ));
+
+    // 4. Every consumer printed the same numbers.
+    let reference = &scenes[0];
+    for scene in &scenes {
+        println!("{:>22}: c = {:.17}", scene.consumer, scene.c);
+        assert_close(&format!("{} c", scene.consumer), reference.c, scene.c);
+        for (row, (mine, theirs)) in scene.table.iter().zip(&reference.table).enumerate() {
+            for (col, (&v, &r)) in mine.iter().zip(theirs).enumerate() {
+                assert_close(
+                    &format!("{} table row {row} column {col}", scene.consumer),
+                    r,
+                    v,
+                );
+            }
+        }
+    }
+    println!(
+        "packaging route: {} consumers agree, {:.1} s in total",
+        scenes.len(),
+        total.elapsed().as_secs_f64()
+    );
+}
