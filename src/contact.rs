@@ -1,9 +1,9 @@
 //! A contact scene (material, friction, method, tolerance) and its solution.
 
 use crate::error::{Error, Result};
-use crate::goodman;
 use crate::material::Material;
 use crate::problem::{Coupling, Profile, StickEdge};
+use crate::{goodman, lcp};
 
 /// Solution methods; the discriminants are the C ABI's `orthoslip_method` values.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -99,16 +99,20 @@ impl Contact {
     /// Solves the scene with the chosen method.
     pub fn solve(&self) -> Result<Solution> {
         let k = self.coupling();
-        match self.method {
-            Method::Goodman => {
-                let s = goodman::solve(&k)?;
-                let err = s.numerical_error();
-                Ok(Solution::new(Method::Goodman, k, Box::new(s), err))
+        let (method, profile): (Method, Box<dyn Profile>) = match self.method {
+            Method::Goodman => (Method::Goodman, Box::new(goodman::solve(&k)?)),
+            Method::Lcp => (
+                Method::Lcp,
+                Box::new(lcp::solve_to_tolerance(&k, self.tolerance)?),
+            ),
+            m => {
+                return Err(Error::InvalidArgument(format!(
+                    "method {m:?} is not available in this version"
+                )));
             }
-            m => Err(Error::InvalidArgument(format!(
-                "method {m:?} is not available in this version"
-            ))),
-        }
+        };
+        let c_error = profile.numerical_error();
+        Ok(Solution::new(method, k, profile, c_error))
     }
 }
 

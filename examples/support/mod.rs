@@ -1,0 +1,4 @@
+//! Code shared by the examples; each example uses a part of it.
+#![allow(dead_code)]
+
+pub mod plot;
