@@ -23,6 +23,7 @@ pub mod goodman;
 pub mod material;
 pub mod problem;
 // solver modules:
+pub mod spence;
 pub mod lcp;
 pub mod quadrature;
 

@@ -1,0 +1,109 @@
+//! Spence's approximation (THEORY.md section 5): the pressure keeps the slip-zone coupling only
+//! through its edge exponent, p_S = (1 - x^2)^(-g) / B(1/2, 1 - g) with
+//! g = 1/2 - atan(bp mu) / pi; the stick half-width c_S solves the compatibility condition
+//! with p_S (hypergeometric functions, [`compatibility`]); q_S is the bounded solution of (E2)
+//! on the stick zone ([`stick_shear`]) and q_S = mu p_S sgn x on the slip zones (E3).
+//! At bp = 0 (g = 1/2) it is Goodman's approximation exactly.
+
+mod compatibility;
+mod hypergeometric;
+mod stick_shear;
+#[cfg(test)]
+mod tests;
+
+use std::f64::consts::PI;
+
+use crate::error::{Error, Result};
+use crate::problem::{Coupling, Profile, StickEdge};
+use crate::quadrature::ln_gamma;
+use compatibility::{Compatibility, Split};
+use stick_shear::StickShear;
+
+/// Spence's solution for one coupling.
+#[derive(Clone, Debug)]
+pub struct SpenceSolution {
+    mu: f64,
+    /// Edge exponent g.
+    g: f64,
+    /// N = 1 / B(1/2, 1 - g).
+    norm: f64,
+    edge: StickEdge,
+    error: f64,
+    /// The stick-zone shear traction (None when the stick zone is empty, c = 0).
+    stick: Option<StickShear>,
+}
+
+/// Solves Spence's approximation for bp >= 0, bq > 0, mu >= 0 (finite); mu = 0 gives c = 0,
+/// q = 0. The compatibility condition has exactly one root for mu > 0, so NoConvergence only
+/// reports a root beyond |ln(c^2 / (1 - c^2))| = 1e7.
+pub fn solve(k: &Coupling) -> Result<SpenceSolution> {
+    let finite = k.bp.is_finite() && k.bq.is_finite() && k.mu.is_finite();
+    if !(finite && k.bp >= 0.0 && k.bq > 0.0 && k.mu >= 0.0) {
+        return Err(Error::InvalidArgument(format!(
+            "Spence needs bp >= 0, bq > 0 and mu >= 0, finite (bp = {}, bq = {}, mu = {})",
+            k.bp, k.bq, k.mu
+        )));
+    }
+    let h = (k.bp * k.mu).atan() / PI;
+    let g = 0.5 - h;
+    let norm = (ln_gamma(1.5 - g) - 0.5 * PI.ln() - ln_gamma(1.0 - g)).exp();
+    let mut sol = SpenceSolution {
+        mu: k.mu,
+        g,
+        norm,
+        edge: StickEdge::from_c(0.0),
+        error: 0.0,
+        stick: None,
+    };
+    if k.mu == 0.0 {
+        return Ok(sol);
+    }
+    let (s, ds) = Compatibility::new(k.bq, k.mu, h).root()?;
+    let v = Split::new(s);
+    let c = (0.5 * v.ln_m).exp();
+    sol.edge = StickEdge {
+        c,
+        one_minus_c: v.m1 / (1.0 + c),
+    };
+    // dc/ds = c (1 - c^2) / 2, plus the rounding of c itself.
+    sol.error = c * (0.5 * v.m1 * ds + f64::EPSILON);
+    if c > 0.0 {
+        sol.stick = Some(StickShear::new(k.bq, k.mu, g, norm, &v));
+    }
+    Ok(sol)
+}
+
+impl SpenceSolution {
+    /// The punch-edge exponent g of p_S ~ (1 - |x|)^(-g).
+    pub fn edge_exponent(&self) -> f64 {
+        self.g
+    }
+}
+
+impl Profile for SpenceSolution {
+    fn edge(&self) -> StickEdge {
+        self.edge
+    }
+
+    fn numerical_error(&self) -> f64 {
+        self.error
+    }
+
+    fn tractions(&self, x: f64) -> (f64, f64) {
+        let ax = x.abs();
+        let ell = ((1.0 - ax) * (1.0 + ax)).ln();
+        let p = self.norm * (-self.g * ell).exp();
+        let q = match &self.stick {
+            Some(stick) if ax < self.edge.c => stick.q(ax, p, ell, self.edge.c),
+            _ => self.mu * p,
+        };
+        let q = if x > 0.0 {
+            q
+        } else if x < 0.0 {
+            -q
+        } else {
+            0.0
+        };
+        (p, q)
+    }
+}
