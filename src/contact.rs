@@ -3,7 +3,7 @@
 use crate::error::{Error, Result};
 use crate::material::Material;
 use crate::problem::{Coupling, Profile, StickEdge};
-use crate::{goodman, lcp};
+use crate::{goodman, lcp, spence};
 
 /// Solution methods; the discriminants are the C ABI's `orthoslip_method` values.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -101,6 +101,7 @@ impl Contact {
         let k = self.coupling();
         let (method, profile): (Method, Box<dyn Profile>) = match self.method {
             Method::Goodman => (Method::Goodman, Box::new(goodman::solve(&k)?)),
+            Method::Spence => (Method::Spence, Box::new(spence::solve(&k)?)),
             Method::Lcp => (
                 Method::Lcp,
                 Box::new(lcp::solve_to_tolerance(&k, self.tolerance)?),
