@@ -1,12 +1,16 @@
 //! Reading the stick-zone edge c off the discrete complementarity solution.
 //!
-//! Near c the exact solution has r = mu p - q ~ beta (c - x)^g on the stick side and
-//! slip s ~ alpha (x - c)^(1 + g) on the slip side (THEORY.md section 5: p smooth on the
-//! stick side, q carries |x - c|^g). So r^(1/g) and s^(1/(1+g)) are locally linear in x;
-//! extrapolating each from its two grid points nearest to c gives the distances
-//! d_r = c - x_{k-1} and d_s = x_k - c from the last stick point x_{k-1} and the first slip
-//! point x_k, and c = x_{k-1} + h d_r / (d_r + d_s). This interpolation is continuous when
+//! At the last stick points the discrete friction reserve r = mu p - q is locally linear
+//! in x, and at the first slip points the discrete slip s grows like (x - c)^(3/2) (the
+//! continuous solution has r ~ (c - x)^g and s ~ (x - c)^(1 + g), THEORY.md section 5, but
+//! piecewise-constant tractions do not resolve the |x - c|^g layer within a cell). So r and
+//! s^(2/3) are extrapolated linearly from their two grid values nearest to c, giving the
+//! distances d_r = c - x_{k-1} from the last stick point and d_s = x_k - c from the first
+//! slip point, and c = x_{k-1} + h d_r / (d_r + d_s). This interpolation is continuous when
 //! a point changes from stick to slip (d_r -> 0 or d_s -> 0), so c is not tied to the grid.
+//! The exponents 1 and 3/2 were chosen by measurement: against Goodman (bp = 0) the error
+//! then depends on the position of c within its cell by <= 0.02 h (0.3 h with the
+//! continuous exponents g, 1 + g), and by <= 0.12 h in coupled cases up to b* = 0.9.
 
 use super::discretisation::Grid;
 
@@ -27,17 +31,17 @@ fn power_law_offset(h: f64, near: f64, far: f64, e: f64) -> Option<f64> {
 }
 
 /// Edge from the complementarity pair at the midpoints (a: scaled slip, b: scaled
-/// friction reserve), with edge exponent g. Stick points: b_i > a_i.
-pub(crate) fn locate(grid: Grid, a: &[f64], b: &[f64], g: f64) -> EdgeEstimate {
+/// friction reserve). Stick points: b_i > a_i.
+pub(crate) fn locate(grid: Grid, a: &[f64], b: &[f64]) -> EdgeEstimate {
     let n = grid.n;
     let h = grid.h;
     let k = (0..n).find(|&i| a[i] >= b[i]).unwrap_or(n);
     // Offsets from the last stick point (stick side) and the first slip point (slip side).
     let d_r = (k >= 2)
-        .then(|| power_law_offset(h, b[k - 1], b[k - 2], g))
+        .then(|| power_law_offset(h, b[k - 1], b[k - 2], 1.0))
         .flatten();
     let d_s = (k + 1 < n)
-        .then(|| power_law_offset(h, a[k], a[k + 1], 1.0 + g))
+        .then(|| power_law_offset(h, a[k], a[k + 1], 1.5))
         .flatten();
     // Position of c measured from the left end of its bracket [lo, lo + width].
     let (lo, width) = match k {
@@ -76,20 +80,18 @@ mod tests {
     #[test]
     fn recovers_an_edge_between_grid_points_from_exact_power_laws() {
         let grid = Grid::new(50);
-        let (c, g) = (0.4137, 0.37);
+        let c = 0.4137;
         let a: Vec<f64> = (0..50)
-            .map(|i| (grid.mid(i) - c).max(0.0).powf(1.0 + g) * 2.0)
+            .map(|i| (grid.mid(i) - c).max(0.0).powf(1.5) * 2.0)
             .collect();
-        let b: Vec<f64> = (0..50)
-            .map(|i| (c - grid.mid(i)).max(0.0).powf(g) * 0.7)
-            .collect();
-        let e = locate(grid, &a, &b, g);
+        let b: Vec<f64> = (0..50).map(|i| (c - grid.mid(i)).max(0.0) * 0.7).collect();
+        let e = locate(grid, &a, &b);
         assert_eq!(e.stick_points, 21);
         assert!((e.c - c).abs() < 1e-14 && (e.one_minus_c - (1.0 - c)).abs() < 1e-14);
         // All stick: c in the last half-panel, extrapolated from the reserve.
         let c1 = 1.0 - 0.003;
-        let b1: Vec<f64> = (0..50).map(|i| (c1 - grid.mid(i)).powf(g)).collect();
-        let e1 = locate(grid, &vec![0.0; 50], &b1, g);
+        let b1: Vec<f64> = (0..50).map(|i| c1 - grid.mid(i)).collect();
+        let e1 = locate(grid, &vec![0.0; 50], &b1);
         assert_eq!(e1.stick_points, 50);
         assert!((e1.one_minus_c - 0.003).abs() < 1e-14);
     }
