@@ -46,7 +46,10 @@ pub struct LcpSolution {
 const COARSEST: usize = 25;
 /// Largest grid of `solve_to_tolerance` (dense LU: ~2 s for the whole ladder).
 pub const MAX_PANELS: usize = 1600;
-/// Initial smoothing parameter when started from a coarser solution.
+/// Friction coefficient where the continuation on the coarsest grid starts, and its step.
+const CONTINUATION_MU0: f64 = 0.05;
+const CONTINUATION_RATIO: f64 = 1.5;
+/// Initial smoothing parameter when started from a nearby solution.
 const WARM_SMOOTHING: f64 = 1e-3;
 /// Converged when max_i |phi_FB(a_i, b_i)| <= this (a, b scaled to O(1)).
 const COMPLEMENTARITY_TOL: f64 = 1e-12;
@@ -69,6 +72,34 @@ fn validate(k: &Coupling) -> Result<()> {
     Ok(())
 }
 
+fn controls(eps0: f64) -> Controls {
+    Controls {
+        eps0,
+        tol: COMPLEMENTARITY_TOL,
+        max_iter: MAX_NEWTON,
+    }
+}
+
+/// q / mu at friction `k.mu` on `grid`, reached from q = 0 at mu_0 = min(mu, `CONTINUATION_MU0`)
+/// (full smoothing) through mu_{j+1} = `CONTINUATION_RATIO` mu_j, each solve started from the
+/// previous q.
+fn continuation_start(k: &Coupling, grid: Grid) -> Result<Vec<f64>> {
+    let mut mu = k.mu.min(CONTINUATION_MU0);
+    let mut z = vec![0.0; grid.n];
+    let mut eps0 = 1.0;
+    loop {
+        let kj = Coupling { mu, ..*k };
+        z = smoothing_newton::solve(&discretisation::assemble(grid, &kj)?, &z, controls(eps0))?.z;
+        if mu >= k.mu {
+            return Ok(z);
+        }
+        let next = (mu * CONTINUATION_RATIO).min(k.mu);
+        z.iter_mut().for_each(|v| *v *= mu / next);
+        mu = next;
+        eps0 = WARM_SMOOTHING;
+    }
+}
+
 /// Solves on one grid, starting from `start` (a coarser solution) when given.
 fn solve_level(k: &Coupling, grid: Grid, start: Option<&LcpSolution>) -> Result<LcpSolution> {
     let n = grid.n;
@@ -87,25 +118,17 @@ fn solve_level(k: &Coupling, grid: Grid, start: Option<&LcpSolution>) -> Result<
             iterations: 0,
         });
     }
-    let lcp = discretisation::assemble(grid, k)?;
-    // Cold start: q = 0 with full smoothing; warm start: the coarser q, little smoothing.
-    let (z0, eps0) = match start {
-        Some(s) => (
-            (0..n)
-                .map(|i| s.tractions(grid.mid(i)).1 / k.mu)
-                .collect::<Vec<_>>(),
-            WARM_SMOOTHING,
-        ),
-        None => (vec![0.0; n], 1.0),
+    // On the coarsest grid: continuation in mu from the small-friction regime, which
+    // selects the physical solution (THEORY.md section 5: for large mu the LCP has other
+    // solutions, e.g. full slip); on finer grids: the coarser q as the start.
+    let z0 = match start {
+        Some(s) => (0..n).map(|i| s.tractions(grid.mid(i)).1 / k.mu).collect(),
+        None => continuation_start(k, grid)?,
     };
     let root = smoothing_newton::solve(
-        &lcp,
+        &discretisation::assemble(grid, k)?,
         &z0,
-        Controls {
-            eps0,
-            tol: COMPLEMENTARITY_TOL,
-            max_iter: MAX_NEWTON,
-        },
+        controls(WARM_SMOOTHING),
     )?;
     let e = stick_edge::locate(grid, &root.a, &root.b);
     Ok(LcpSolution {

@@ -52,8 +52,9 @@ pub(crate) fn locate(grid: Grid, a: &[f64], b: &[f64]) -> EdgeEstimate {
     let offset = match (k, d_r, d_s) {
         (0, _, Some(ds)) => width - ds,
         (0, _, None) => 0.0,
-        (_, Some(dr), _) if k == n => dr,
-        (_, None, _) if k == n => width,
+        // All stick: c in the last half-panel, kept below 1 (1 - c >= h / 4).
+        (_, Some(dr), _) if k == n => dr.min(0.5 * width),
+        (_, None, _) if k == n => 0.5 * width,
         (_, Some(dr), Some(ds)) => h * dr / (dr + ds),
         (_, Some(dr), None) => dr,
         (_, None, Some(ds)) => width - ds,
@@ -89,10 +90,13 @@ mod tests {
         assert_eq!(e.stick_points, 21);
         assert!((e.c - c).abs() < 1e-14 && (e.one_minus_c - (1.0 - c)).abs() < 1e-14);
         // All stick: c in the last half-panel, extrapolated from the reserve.
-        let c1 = 1.0 - 0.003;
+        let c1 = 1.0 - 0.008;
         let b1: Vec<f64> = (0..50).map(|i| c1 - grid.mid(i)).collect();
         let e1 = locate(grid, &vec![0.0; 50], &b1);
         assert_eq!(e1.stick_points, 50);
-        assert!((e1.one_minus_c - 0.003).abs() < 1e-14);
+        assert!((e1.one_minus_c - 0.008).abs() < 1e-14);
+        // ... and never at 1 when the reserve gives no slope.
+        let e2 = locate(grid, &vec![0.0; 50], &vec![1.0; 50]);
+        assert!(e2.c < 1.0 && e2.one_minus_c == 0.25 * grid.h);
     }
 }

@@ -222,6 +222,10 @@ fn extremes_give_a_status_never_nan() {
                         assert!(s.numerical_error().is_finite() && s.numerical_error() > 0.0);
                         let (p, q) = s.tractions(0.7);
                         assert!(p.is_finite() && q.is_finite());
+                        let (pp, qq) = s.panel_tractions();
+                        for i in 0..s.stick_points() {
+                            assert!(qq[i] >= -mu * pp[i], "{k:?}: q < -mu p at point {i}");
+                        }
                     }
                     Err(Error::NoConvergence(m)) => println!("{k:?}: {m}"),
                     Err(e) => panic!("{k:?}: unexpected {e}"),
@@ -229,6 +233,31 @@ fn extremes_give_a_status_never_nan() {
             }
         }
     }
+}
+
+#[test]
+fn large_friction_stays_on_the_branch_continuous_from_small_friction() {
+    // Without the continuation in mu the LCP for b* = 0.5, mu = 100 converged to full
+    // slip (c = 0); the physical branch approaches full stick with a finite slip zone.
+    let mut previous = 0.0;
+    for mu in [0.3, 1.0, 10.0, 100.0] {
+        let s = solve(
+            &Coupling {
+                bp: 0.5,
+                bq: 0.5,
+                mu,
+            },
+            100,
+        )
+        .unwrap();
+        assert!(
+            s.edge().c >= previous - s.numerical_error(),
+            "mu {mu}: {:?}",
+            s.edge()
+        );
+        previous = s.edge().c;
+    }
+    assert!(previous > 0.99);
 }
 
 #[test]
