@@ -18,6 +18,12 @@ static inline void check_fail(const char *file, int line, const char *what)
     exit(1);
 }
 
+/* ORTHOSLIP_TEST_QUICK is set (by the harness, under valgrind): same code paths, less work. */
+static inline int test_quick(void)
+{
+    return getenv("ORTHOSLIP_TEST_QUICK") != NULL;
+}
+
 #define CHECK(cond)                                                                          \
     do {                                                                                     \
         if (!(cond)) check_fail(__FILE__, __LINE__, #cond);                                  \

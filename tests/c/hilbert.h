@@ -4,7 +4,9 @@
  * The interval is split at +-c, at the edge pieces [-1, -1+e], [1-e, 1] (gsl_integration_qaws
  * with the weight (t+1)^(-g) resp. (1-t)^(-g); qaws' alpha applies at the LEFT end) and, for a
  * principal value, at [x-h, x+h] (gsl_integration_qawc); the remaining pieces use
- * gsl_integration_qags. Every piece ends at the non-smooth points, never straddles them. */
+ * gsl_integration_qag (no extrapolation: qags' epsilon algorithm was misled by the
+ * near-singularity 1 - c ~ 3e-8 away from a piece's end). Every piece ends at the non-smooth
+ * points, never straddles them. */
 #ifndef ORTHOSLIP_TEST_HILBERT_H
 #define ORTHOSLIP_TEST_HILBERT_H
 
@@ -108,8 +110,8 @@ static inline double hilbert_piece(hilbert_quad *h, hilbert_integrand *in, doubl
                                       HILBERT_LIMIT, h->work, &result, &abserr);
         gsl_integration_qaws_table_free(table);
     } else {
-        status = gsl_integration_qag(&fn, a, b, HILBERT_EPSABS, HILBERT_EPSREL, HILBERT_LIMIT, GSL_INTEG_GAUSS21,
-                                      h->work, &result, &abserr);
+        status = gsl_integration_qag(&fn, a, b, HILBERT_EPSABS, HILBERT_EPSREL, HILBERT_LIMIT,
+                                     GSL_INTEG_GAUSS21, h->work, &result, &abserr);
     }
     hilbert_account(h, status, abserr);
     return result;

@@ -1,0 +1,213 @@
+//! Builds and runs the C test programs in `tests/c/` against the static library: each as C11
+//! and again as C++17 (`-Wall -Wextra -Werror -pedantic`), and under valgrind when it is on
+//! PATH (required when the environment variable CI is set). The programs check the C ABI
+//! against GNU GSL (test-only: linked into these test programs, never into the library).
+//! Also checks that `orthoslip.h` compiles alone and when included twice, in both languages.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+use std::time::Instant;
+
+/// What `rustc --print native-static-libs` lists for the static library (besides -lc).
+const NATIVE_LIBS: &[&str] = &["-lgcc_s", "-lutil", "-lrt", "-lpthread", "-lm", "-ldl"];
+/// GSL, after the library.
+const GSL_LIBS: &[&str] = &["-lgsl", "-lgslcblas", "-lm"];
+const WARNINGS: &[&str] = &["-Wall", "-Wextra", "-Werror", "-pedantic"];
+const VALGRIND: &[&str] = &[
+    "--error-exitcode=99",
+    "--leak-check=full",
+    "--errors-for-leak-kinds=definite,indirect",
+    "--show-leak-kinds=definite,indirect",
+];
+
+#[derive(Clone, Copy, Debug)]
+enum Lang {
+    C,
+    Cxx,
+}
+
+impl Lang {
+    fn suffix(self) -> &'static str {
+        match self {
+            Lang::C => "c",
+            Lang::Cxx => "cxx",
+        }
+    }
+}
+
+fn manifest_dir() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// target/<profile>/, from this test binary at target/<profile>/deps/c_programs-<hash>.
+fn profile_dir() -> PathBuf {
+    let exe = std::env::current_exe().expect("path of the test binary");
+    let deps = exe.parent().expect("deps directory");
+    deps.parent().expect("profile directory").to_path_buf()
+}
+
+/// The newest liborthoslip.a in target/<profile>/deps/ or target/<profile>/ (a cold
+/// `cargo test` leaves it only in deps/; an older `cargo build` may have left a stale copy).
+fn static_library() -> PathBuf {
+    let profile = profile_dir();
+    [profile.join("deps"), profile]
+        .iter()
+        .map(|dir| dir.join("liborthoslip.a"))
+        .filter_map(|p| Some((p.metadata().ok()?.modified().ok()?, p)))
+        .max()
+        .map(|(_, p)| p)
+        .expect("liborthoslip.a in target/<profile>/deps or target/<profile>")
+}
+
+/// Scratch directory for the binaries, under target/<profile>/, one per test process.
+fn work_dir() -> PathBuf {
+    let dir = profile_dir().join(format!("c_programs-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("create the scratch directory");
+    dir
+}
+
+/// The C or C++ compiler the `cc` crate picks for this target, with the shared flags.
+fn compiler(lang: Lang) -> Command {
+    let target = env!("ORTHOSLIP_TARGET");
+    let mut cmd = cc::Build::new()
+        .cargo_metadata(false)
+        .target(target)
+        .host(target)
+        .opt_level(1)
+        .debug(true)
+        .cpp(matches!(lang, Lang::Cxx))
+        .get_compiler()
+        .to_command();
+    match lang {
+        Lang::C => cmd.arg("-std=c11"),
+        Lang::Cxx => cmd.args(["-x", "c++", "-std=c++17"]),
+    };
+    cmd.args(WARNINGS)
+        .arg("-I")
+        .arg(manifest_dir().join("include"))
+        .arg("-I")
+        .arg(manifest_dir().join("tests/c"));
+    cmd
+}
+
+fn show(output: &Output) -> String {
+    format!(
+        "--- stdout ---\n{}--- stderr ---\n{}",
+        String::from_utf8_lossy(&output.stdout),
+        String::from_utf8_lossy(&output.stderr)
+    )
+}
+
+/// Runs cmd; panics with its output unless it exits with status 0.
+fn run(mut cmd: Command, what: &str) -> Output {
+    let output = cmd
+        .output()
+        .unwrap_or_else(|e| panic!("{what}: cannot start {cmd:?}: {e}"));
+    assert!(
+        output.status.success(),
+        "{what} failed ({}):\n{cmd:?}\n{}",
+        output.status,
+        show(&output)
+    );
+    output
+}
+
+/// Compiles and links tests/c/<name>.c as lang into the scratch directory.
+fn build(name: &str, lang: Lang) -> PathBuf {
+    let exe = work_dir().join(format!("{name}-{}", lang.suffix()));
+    let mut cmd = compiler(lang);
+    cmd.arg("-pthread")
+        .arg(manifest_dir().join(format!("tests/c/{name}.c")))
+        .args(["-x", "none"])
+        .arg(static_library())
+        .args(NATIVE_LIBS)
+        .args(GSL_LIBS)
+        .arg("-o")
+        .arg(&exe);
+    run(cmd, &format!("compiling {name}.c as {lang:?}"));
+    exe
+}
+
+fn on_path(program: &str) -> bool {
+    std::env::var_os("PATH")
+        .is_some_and(|paths| std::env::split_paths(&paths).any(|d| d.join(program).is_file()))
+}
+
+/// Runs a built program, printing its output and run time.
+fn run_program(exe: &Path, name: &str, lang: Lang) {
+    let start = Instant::now();
+    let out = run(Command::new(exe), &format!("{name} ({lang:?})"));
+    print!("{}", String::from_utf8_lossy(&out.stdout));
+    println!("{name} ({lang:?}): ran in {:.2?}", start.elapsed());
+}
+
+/// Runs a built program under valgrind (fewer points with ORTHOSLIP_TEST_QUICK: the same
+/// code paths); without valgrind on PATH this fails when CI is set and is skipped otherwise.
+fn memcheck(exe: &Path, name: &str) {
+    if !on_path("valgrind") {
+        assert!(
+            std::env::var_os("CI").is_none(),
+            "valgrind is not on PATH but CI is set: {name} must run under valgrind"
+        );
+        println!("{name}: valgrind not on PATH, memory check skipped");
+        return;
+    }
+    let start = Instant::now();
+    let mut cmd = Command::new("valgrind");
+    cmd.args(VALGRIND).arg(exe).env("ORTHOSLIP_TEST_QUICK", "1");
+    run(cmd, &format!("{name} under valgrind"));
+    println!("{name}: valgrind clean in {:.2?}", start.elapsed());
+}
+
+/// Builds tests/c/<name>.c as C and as C++, runs both and the C build under valgrind.
+fn check_program(name: &str) {
+    let c = build(name, Lang::C);
+    run_program(&c, name, Lang::C);
+    memcheck(&c, name);
+    let cxx = build(name, Lang::Cxx);
+    run_program(&cxx, name, Lang::Cxx);
+    for exe in [c, cxx] {
+        std::fs::remove_file(exe).ok();
+    }
+}
+
+#[test]
+fn header_compiles_alone_and_twice() {
+    for lang in [Lang::C, Lang::Cxx] {
+        for name in ["header_alone", "header_twice"] {
+            let obj = work_dir().join(format!("{name}-{}.o", lang.suffix()));
+            let mut cmd = compiler(lang);
+            cmd.arg("-c")
+                .arg(manifest_dir().join(format!("tests/c/{name}.c")))
+                .arg("-o")
+                .arg(&obj);
+            run(cmd, &format!("{name}.c as {lang:?}"));
+            std::fs::remove_file(&obj).ok();
+        }
+    }
+}
+
+#[test]
+fn goodman_c() {
+    check_program("goodman_c");
+}
+
+#[test]
+fn goodman_residuals() {
+    check_program("goodman_residuals");
+}
+
+#[test]
+fn errors() {
+    check_program("errors");
+}
+
+#[test]
+fn semantics() {
+    check_program("semantics");
+}
+
+#[test]
+fn threads() {
+    check_program("threads");
+}
