@@ -211,3 +211,8 @@ fn semantics() {
 fn threads() {
     check_program("threads");
 }
+
+#[test]
+fn spence_residuals() {
+    check_program("spence_residuals");
+}
