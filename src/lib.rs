@@ -26,6 +26,7 @@ pub mod problem;
 pub mod spence;
 pub mod lcp;
 pub mod quadrature;
+pub mod coupled;
 
 pub mod ffi;
 

@@ -1,0 +1,327 @@
+//! Cauchy (finite Hilbert) transforms of weighted Legendre polynomials on a reference panel:
+//! C_k(y) = PV int_{-1}^{1} w(t) P_k(t) / (y - t) dt for the end weights w = 1, (1 - t)^e,
+//! (1 + t)^e (e in (-1, 1)) that carry the local exponents g, g - 1, -g of the solution
+//! (COUPLED.md "Local exponents").
+//!
+//! Near the panel (|y| <= 1.1) C_0 is evaluated in closed form and the rest follow from the
+//! exact recurrence (k+1) C_{k+1} + k C_{k-1} = (2k+1) (y C_k - M_k), M_k = int w P_k; far
+//! from it a Gauss-Jacobi rule for w is exact to rounding (the integrand is analytic in a
+//! Bernstein ellipse of parameter >= 1.55).
+
+use crate::quadrature::gauss_jacobi;
+use std::f64::consts::PI;
+
+/// Nodes of the far-field rule: 1.55^(-2 * 44) < 1e-16.
+const FAR_NODES: usize = 96;
+/// |y| above which the far-field rule is used.
+const NEAR_LIMIT: f64 = 1.02;
+
+/// Endpoint weight of a panel basis function on [-1, 1].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Weight {
+    /// w = 1.
+    One,
+    /// w = (1 - t)^e: the exponent sits at the right end.
+    Right(f64),
+    /// w = (1 + t)^e: the exponent sits at the left end.
+    Left(f64),
+}
+
+impl Weight {
+    /// Jacobi exponents (alpha at t = 1, beta at t = -1).
+    pub fn exponents(self) -> (f64, f64) {
+        match self {
+            Weight::One => (0.0, 0.0),
+            Weight::Right(e) => (e, 0.0),
+            Weight::Left(e) => (0.0, e),
+        }
+    }
+
+    /// w(t) for -1 < t < 1.
+    pub fn eval(self, t: f64) -> f64 {
+        match self {
+            Weight::One => 1.0,
+            Weight::Right(e) => (1.0 - t).powf(e),
+            Weight::Left(e) => (1.0 + t).powf(e),
+        }
+    }
+
+    /// PV int_{-1}^{1} w(t) / (y - t) dt for |y| <= ~1.3, y != +-1.
+    fn cauchy0(self, y: f64) -> f64 {
+        match self {
+            Weight::One => ((1.0 + y) / (1.0 - y)).abs().ln(),
+            Weight::Right(e) => end_cauchy(e, 1.0 - y),
+            Weight::Left(e) => -end_cauchy(e, 1.0 + y),
+        }
+    }
+}
+
+/// digamma psi(x) for x > 0 (upward recurrence to x >= 15, then the asymptotic series).
+fn digamma(x: f64) -> f64 {
+    let mut y = x;
+    let mut acc = 0.0;
+    while y < 15.0 {
+        acc -= 1.0 / y;
+        y += 1.0;
+    }
+    let r2 = 1.0 / (y * y);
+    let series = r2
+        * (-1.0 / 12.0
+            + r2 * (1.0 / 120.0
+                + r2 * (-1.0 / 252.0
+                    + r2 * (1.0 / 240.0 + r2 * (-1.0 / 132.0 + r2 * 691.0 / 32_760.0)))));
+    acc + y.ln() - 0.5 / y + series
+}
+
+/// T(a, zeta) = int_2^inf u^(-a) / (u - 2 zeta) du (principal value for zeta > 1), a in (0, 1),
+/// |zeta| <= 1/2 by its power series 2^(-a) sum zeta^k / (a + k), 1/2 < zeta < 3/2 by the
+/// logarithmic expansion about zeta = 1 of 2^(-a)/a 2F1(1, a; 1 + a; zeta)
+/// (Abramowitz-Stegun 15.3.10, real part of the continuation).
+fn end_tail(a: f64, zeta: f64) -> f64 {
+    let scale = (-a).exp2();
+    let mut sum = 0.0;
+    if zeta.abs() <= 0.5 {
+        let mut zk = 1.0;
+        for k in 0..200 {
+            let term = zk / (a + k as f64);
+            sum += term;
+            if term.abs() < 1e-17 * sum.abs() {
+                break;
+            }
+            zk *= zeta;
+        }
+    } else {
+        let r = 1.0 - zeta;
+        let log = r.abs().ln();
+        let (mut coef, mut rn) = (1.0, 1.0);
+        let mut d = digamma(1.0) - digamma(a);
+        for n in 0..200 {
+            let nf = n as f64;
+            let term = coef * (d - log) * rn;
+            sum += term;
+            if term.abs() < 1e-17 * sum.abs() && n > 2 {
+                break;
+            }
+            coef *= (a + nf) / (nf + 1.0);
+            d += 1.0 / (nf + 1.0) - 1.0 / (a + nf);
+            rn *= r;
+        }
+    }
+    scale * sum
+}
+
+/// E(e, z) = PV int_0^2 u^e / (u - z) du for e in (-1, 1) and -0.3 < z < 2.3 (z != 0, 2).
+/// Negative e: the integral over (0, inf) in closed form (pi z^e cot(-pi e), or
+/// pi |z|^e / sin(-pi e) for z < 0) minus the tail over (2, inf); e > 0 reduces to e - 1.
+pub fn end_cauchy(e: f64, z: f64) -> f64 {
+    if e == 0.0 {
+        return ((2.0 - z) / z).abs().ln();
+    }
+    if e > 0.0 {
+        return e.exp2() / e + z * end_cauchy(e - 1.0, z);
+    }
+    let a = -e;
+    let base = if z > 0.0 {
+        PI * z.powf(e) / (PI * a).tan()
+    } else {
+        PI * (-z).powf(e) / (PI * a).sin()
+    };
+    base - end_tail(a, 0.5 * z)
+}
+
+/// Legendre polynomials P_0..P_{n-1} at t into `out`.
+pub fn legendre(t: f64, out: &mut [f64]) {
+    let n = out.len();
+    if n == 0 {
+        return;
+    }
+    out[0] = 1.0;
+    if n > 1 {
+        out[1] = t;
+    }
+    for k in 1..n.saturating_sub(1) {
+        let kf = k as f64;
+        out[k + 1] = ((2.0 * kf + 1.0) * t * out[k] - kf * out[k - 1]) / (kf + 1.0);
+    }
+}
+
+/// Everything needed to transform one weight's Legendre family: its far-field Gauss rule
+/// (with the Legendre values at the nodes) and the moments M_k.
+#[derive(Clone, Debug)]
+pub struct WeightedFamily {
+    /// The weight.
+    pub weight: Weight,
+    /// Number of Legendre degrees handled (0..degrees).
+    pub degrees: usize,
+    nodes: Vec<f64>,
+    /// Gauss weights times P_k(node): row-major [node][k].
+    wp: Vec<f64>,
+    moments: Vec<f64>,
+}
+
+impl WeightedFamily {
+    /// Family for `weight` and Legendre degrees below `degrees`.
+    pub fn new(weight: Weight, degrees: usize) -> Self {
+        let (a, b) = weight.exponents();
+        let (nodes, weights) = gauss_jacobi(FAR_NODES, a, b);
+        let mut wp = vec![0.0; FAR_NODES * degrees];
+        let mut moments = vec![0.0; degrees];
+        for (j, (&t, &w)) in nodes.iter().zip(&weights).enumerate() {
+            let row = &mut wp[j * degrees..(j + 1) * degrees];
+            legendre(t, row);
+            for (k, v) in row.iter_mut().enumerate() {
+                *v *= w;
+                moments[k] += *v;
+            }
+        }
+        Self {
+            weight,
+            degrees,
+            nodes,
+            wp,
+            moments,
+        }
+    }
+
+    /// int_{-1}^{1} w P_k.
+    pub fn moment(&self, k: usize) -> f64 {
+        self.moments[k]
+    }
+
+    /// C_k(y) for k < min(out.len(), degrees) into `out` (y real, not a panel end point).
+    pub fn cauchy(&self, y: f64, out: &mut [f64]) {
+        let n = out.len().min(self.degrees);
+        let stride = self.degrees;
+        if y.abs() > NEAR_LIMIT {
+            out[..n].fill(0.0);
+            for (j, &t) in self.nodes.iter().enumerate() {
+                let inv = 1.0 / (y - t);
+                for (o, v) in out[..n]
+                    .iter_mut()
+                    .zip(&self.wp[j * stride..j * stride + n])
+                {
+                    *o += v * inv;
+                }
+            }
+            return;
+        }
+        out[0] = self.weight.cauchy0(y);
+        if n > 1 {
+            out[1] = y * out[0] - self.moments[0];
+        }
+        for k in 1..n.saturating_sub(1) {
+            let kf = k as f64;
+            out[k + 1] =
+                ((2.0 * kf + 1.0) * (y * out[k] - self.moments[k]) - kf * out[k - 1]) / (kf + 1.0);
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Independent reference: PV int_{-1}^{1} w(t) f(t) / (y - t) dt by singularity
+    /// subtraction, the regular part with an adaptive Gauss-Kronrod-free scheme: composite
+    /// Gauss-Legendre on a t = -1 + 2 s^m graded mesh (m removes the end singularity).
+    fn reference(w: Weight, k: usize, y: f64) -> f64 {
+        let pk = |t: f64| {
+            let mut v = vec![0.0; k + 1];
+            legendre(t, &mut v);
+            v[k]
+        };
+        let f = |t: f64| w.eval(t) * pk(t);
+        // Regular part: int (f(t) - f(y)) / (y - t) dt (f(y) = 0 outside [-1,1] use plain).
+        let inside = y.abs() < 1.0;
+        let fy = if inside { f(y) } else { 0.0 };
+        let (x, wts) = crate::quadrature::gauss_legendre(30);
+        // graded composite rule on [-1, 1], dense near both ends and near y
+        let mut breaks = vec![-1.0, 1.0];
+        for j in 1..40 {
+            let d = 0.5f64.powi(j);
+            breaks.push(-1.0 + d);
+            breaks.push(1.0 - d);
+            if inside {
+                for s in [-1.0, 1.0] {
+                    let b = y + s * d;
+                    if b > -1.0 && b < 1.0 {
+                        breaks.push(b);
+                    }
+                }
+            }
+        }
+        if inside {
+            breaks.push(y);
+        }
+        breaks.sort_by(f64::total_cmp);
+        breaks.dedup();
+        let (a, b) = w.exponents();
+        let mut sum = 0.0;
+        for p in breaks.windows(2) {
+            let (m, h) = (0.5 * (p[0] + p[1]), 0.5 * (p[1] - p[0]));
+            // the panel touching a weighted end: Gauss-Jacobi for w P_k / (y - t)
+            let (ea, eb) = (
+                if p[1] == 1.0 { a } else { 0.0 },
+                if p[0] == -1.0 { b } else { 0.0 },
+            );
+            if ea != 0.0 || eb != 0.0 {
+                let (xj, wj) = crate::quadrature::gauss_jacobi(30, ea, eb);
+                // one-sided weights: w(t) = (h (1 - xi))^ea (h (1 + xi))^eb exactly here
+                for (xi, wi) in xj.iter().zip(&wj) {
+                    let t = m + h * xi;
+                    sum += h * wi * h.powf(ea + eb) * pk(t) / (y - t);
+                }
+                for (xi, wi) in x.iter().zip(&wts) {
+                    let t = m + h * xi;
+                    sum -= h * wi * fy / (y - t);
+                }
+            } else {
+                for (xi, wi) in x.iter().zip(&wts) {
+                    let t = m + h * xi;
+                    // distances to the ends without cancellation (dyadic break points)
+                    let omt = (1.0 - p[1]) + h * (1.0 - xi);
+                    let opt = (1.0 + p[0]) + h * (1.0 + xi);
+                    let ft = omt.powf(a) * opt.powf(b) * pk(t);
+                    sum += h * wi * (ft - fy) / (y - t);
+                }
+            }
+        }
+        sum + fy * ((1.0 + y) / (1.0 - y)).abs().ln()
+    }
+
+    #[test]
+    fn end_cauchy_matches_quadrature() {
+        for w in [
+            Weight::One,
+            Weight::Right(-0.37),
+            Weight::Left(0.37),
+            Weight::Right(0.2),
+            Weight::Right(-0.8),
+            Weight::Left(-0.5),
+        ] {
+            let fam = WeightedFamily::new(w, 12);
+            let mut out = vec![0.0; 12];
+            for y in [
+                -1.6, -1.2, -1.05, -0.999, -0.7, -0.2, 0.01, 0.5, 0.9, 0.9999, 1.02, 1.3, 3.0,
+            ] {
+                fam.cauchy(y, &mut out);
+                for k in [0usize, 1, 2, 5, 11] {
+                    let r = reference(w, k, y);
+                    let scale = 1.0 + r.abs();
+                    assert!(
+                        (out[k] - r).abs() < 2e-12 * scale,
+                        "{w:?} y {y} k {k}: {} vs {r}",
+                        out[k]
+                    );
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn digamma_values() {
+        assert!((digamma(1.0) + 0.577_215_664_901_532_9).abs() < 1e-15);
+        assert!((digamma(0.5) + 1.963_510_026_021_423_5).abs() < 1e-14);
+        assert!((digamma(0.1) + 10.423_754_940_411_076).abs() < 1e-13);
+    }
+}

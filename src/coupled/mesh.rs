@@ -1,0 +1,315 @@
+//! Panels on 0 <= x <= 1 (p even and q odd supply -1 < x < 0) graded geometrically towards
+//! the singular points x = c and x = 1, and the basis carried by each panel: weighted
+//! Legendre polynomials whose weights hold the local exponents of COUPLED.md:
+//! - central panel [-l, l]: p and q / x polynomials in x^2;
+//! - stick panels: p, q polynomials; the one ending at c adds q (c - x)^g P_k and the
+//!   wrong-c mode (c - x)^(g-1);
+//! - slip panels: p polynomial; the one starting at c adds (x - c)^g P_k and the wrong-c mode
+//!   (x - c)^(g-1); the one ending at 1 is (1 - x)^(-g) P_k. On slip panels q = mu p.
+//!
+//! Grading ([`Layout`]): each panel lies at least its own width away from every singular
+//! point that its basis does not carry, so the error decays geometrically in the order n.
+
+use super::cauchy::Weight;
+
+/// A point of [0, 1] held both as x and as u = 1 - x, each to full relative accuracy, so
+/// that lengths near x = 1 (slip zones of width 1e-9 and less) keep their relative accuracy.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Pt {
+    /// x.
+    pub x: f64,
+    /// 1 - x.
+    pub u: f64,
+}
+
+impl Pt {
+    /// The point at signed distance s from the stick edge (c, w = 1 - c).
+    pub fn from_edge(c: f64, w: f64, s: f64) -> Self {
+        let u = w - s;
+        if u < 0.5 {
+            Pt { x: 1.0 - u, u }
+        } else {
+            let x = c + s;
+            Pt { x, u: 1.0 - x }
+        }
+    }
+
+    /// The point at local coordinate t of the panel with centre m and half-width h.
+    pub fn local(m: Pt, h: f64, t: f64) -> Self {
+        let (x, u) = (m.x + h * t, m.u - h * t);
+        if u < 0.5 {
+            Pt { x: 1.0 - u, u }
+        } else {
+            Pt { x, u: 1.0 - x }
+        }
+    }
+
+    /// self - other (x difference) without cancellation near x = 1.
+    pub fn minus(self, other: Pt) -> f64 {
+        if self.u < 0.5 && other.u < 0.5 {
+            other.u - self.u
+        } else {
+            self.x - other.x
+        }
+    }
+}
+
+/// `count` functions weight(t) P_k(t) on a panel, t in [-1, 1] the local coordinate.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Block {
+    /// Endpoint weight.
+    pub weight: Weight,
+    /// Number of functions.
+    pub count: usize,
+    /// The wrong-c mode (exponent g - 1 at c): its coefficient is the root function.
+    pub wrong_c: bool,
+}
+
+/// One panel [a, b] of [0, 1]. The central panel [0, l] stands for [-l, l]: there p and q/x
+/// are polynomials in Y = 2 x^2 / l^2 - 1 (p even and q odd built in), so the transforms reduce
+/// to the weights (1 + Y)^(-1/2) and (1 + Y)^(1/2) in Y.
+#[derive(Clone, Debug)]
+pub struct Panel {
+    /// Left end.
+    pub a: Pt,
+    /// Right end.
+    pub b: Pt,
+    /// Midpoint.
+    pub m: Pt,
+    /// Half-width.
+    pub h: f64,
+    /// The central panel (variable Y = 2 x^2 / l^2 - 1).
+    pub central: bool,
+    /// Inside the stick zone.
+    pub stick: bool,
+    /// Basis of p.
+    pub p: Vec<Block>,
+    /// Basis of q (stick panels only; q = mu p on slip panels).
+    pub q: Vec<Block>,
+    /// Offset of this panel's p coefficients in the unknown vector.
+    pub p_offset: usize,
+    /// Offset of this panel's q coefficients.
+    pub q_offset: usize,
+}
+
+impl Panel {
+    fn new(a: Pt, b: Pt, stick: bool, p: Vec<Block>, q: Vec<Block>) -> Self {
+        let h = 0.5 * b.minus(a);
+        let m = Pt::local(a, h, 1.0);
+        Panel {
+            a,
+            b,
+            m,
+            h,
+            central: false,
+            stick,
+            p,
+            q,
+            p_offset: 0,
+            q_offset: 0,
+        }
+    }
+
+    /// Local coordinate t of the point x (|t| <= 1 inside), with 1 - t and 1 + t computed
+    /// from the distances to the ends.
+    pub fn local(&self, x: Pt) -> (f64, f64, f64) {
+        if self.central {
+            let r = x.x / self.h;
+            let (db, dsum) = (self.b.minus(x) / self.h, 1.0 + r);
+            return (2.0 * r * r - 1.0, 2.0 * db * dsum, 2.0 * r * r);
+        }
+        let (da, db) = (x.minus(self.a), self.b.minus(x));
+        ((da - db) / (2.0 * self.h), db / self.h, da / self.h)
+    }
+
+    /// Number of p (resp. q) unknowns.
+    pub fn np(&self) -> usize {
+        self.p.iter().map(|b| b.count).sum()
+    }
+
+    /// Number of q unknowns.
+    pub fn nq(&self) -> usize {
+        self.q.iter().map(|b| b.count).sum()
+    }
+}
+
+/// Panel break points as distances from c in units of sigma = min(c, 1 - c): stick panels
+/// end at c - sigma stick[k] (the central panel takes the rest), slip panels at
+/// c + sigma slip[k] (the end panel takes the rest). Fixed while c is refined, so that the
+/// root function kappa(c) is smooth.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Layout {
+    stick: Vec<f64>,
+    slip: Vec<f64>,
+}
+
+impl Layout {
+    /// The grading for stick edge (c, w = 1 - c): the panels at c have width sigma / 2; every
+    /// further panel stays at least its own width away from c (and from 1), down to the
+    /// central panel [-l, l] with l <= 1.5 times its distance from c (local Bernstein
+    /// parameter >= 4.4, so errors decay at least like 4.4^(-n)).
+    pub fn for_edge(c: f64, w: f64) -> Self {
+        let sigma = c.min(w);
+        let h = 0.5 * sigma;
+        let mut stick = vec![h];
+        let mut d = h;
+        loop {
+            let l = c - d;
+            if l <= 1.5 * d {
+                break;
+            }
+            let last = l <= 3.0 * d;
+            d += if last { 0.5 * (l - d) } else { d };
+            stick.push(d);
+            if last {
+                break;
+            }
+        }
+        let mut slip = vec![h];
+        let (mut d, mut rest) = (h, w - h);
+        while rest > 1.5 * d {
+            let last = rest <= 3.0 * d;
+            let step = if last { 0.5 * (rest - d) } else { d };
+            rest -= step;
+            d += step;
+            slip.push(d);
+            if last {
+                break;
+            }
+        }
+        let scale = |v: Vec<f64>| v.into_iter().map(|x| x / sigma).collect();
+        Layout {
+            stick: scale(stick),
+            slip: scale(slip),
+        }
+    }
+}
+
+/// The discretisation for a given c (w = 1 - c accurate) and polynomial order n.
+#[derive(Clone, Debug)]
+pub struct Mesh {
+    /// Stick half-width.
+    pub c: f64,
+    /// 1 - c.
+    pub w: f64,
+    /// Panels left to right, central first.
+    pub panels: Vec<Panel>,
+    /// Index of the stick panel ending at c.
+    pub c_stick: usize,
+    /// Index of the slip panel starting at c.
+    pub c_slip: usize,
+    /// Total number of unknowns.
+    pub unknowns: usize,
+}
+
+/// Shorthand for a [`Block`].
+fn block(weight: Weight, count: usize) -> Block {
+    Block {
+        weight,
+        count,
+        wrong_c: false,
+    }
+}
+
+/// The single wrong-c mode with exponent e = g - 1.
+fn wrong_c(weight: Weight) -> Block {
+    Block {
+        weight,
+        count: 1,
+        wrong_c: true,
+    }
+}
+
+impl Mesh {
+    /// Builds the panels for stick edge c (0 < c < 1, w = 1 - c), order n, edge exponent g,
+    /// with the panel break points of `layout` scaled to this c; None if the layout does not
+    /// fit (it was made for a too different c). Uncoupled (bp = 0): p = p0 is smooth at c,
+    /// and the slip panel at c carries polynomials only (the redundant singular blocks would
+    /// only cost conditioning).
+    pub fn new(c: f64, w: f64, n: usize, g: f64, coupled: bool, layout: &Layout) -> Option<Self> {
+        let sigma = c.min(w);
+        let at = |s: f64| Pt::from_edge(c, w, s);
+        let one = |count| block(Weight::One, count);
+        let stick_d: Vec<f64> = layout.stick.iter().map(|r| r * sigma).collect();
+        let slip_d: Vec<f64> = layout.slip.iter().map(|r| r * sigma).collect();
+        let widths = |d: &[f64]| d[d.len() - 1] - if d.len() > 1 { d[d.len() - 2] } else { 0.0 };
+        let (l, rest) = (c - stick_d[stick_d.len() - 1], w - slip_d[slip_d.len() - 1]);
+        if !(l > 0.25 * widths(&stick_d) && rest > 0.25 * widths(&slip_d)) {
+            return None;
+        }
+        let mut panels = vec![Panel::new(
+            Pt { x: 0.0, u: 1.0 },
+            at(-stick_d[stick_d.len() - 1]),
+            true,
+            vec![one(n)],
+            vec![one(n)],
+        )];
+        panels[0].central = true;
+        panels[0].h = panels[0].b.x;
+        for k in (0..stick_d.len()).rev() {
+            let right = if k == 0 { 0.0 } else { stick_d[k - 1] };
+            let q = if k == 0 {
+                vec![
+                    one(n),
+                    block(Weight::Right(g), n),
+                    wrong_c(Weight::Right(g - 1.0)),
+                ]
+            } else {
+                vec![one(n)]
+            };
+            panels.push(Panel::new(
+                at(-stick_d[k]),
+                at(-right),
+                true,
+                vec![one(n)],
+                q,
+            ));
+        }
+        let c_stick = panels.len() - 1;
+        let c_slip = panels.len();
+        for k in 0..slip_d.len() {
+            let left = at(if k == 0 { 0.0 } else { slip_d[k - 1] });
+            let p = if k == 0 && coupled {
+                vec![
+                    one(n),
+                    block(Weight::Left(g), n),
+                    wrong_c(Weight::Left(g - 1.0)),
+                ]
+            } else {
+                vec![one(n)]
+            };
+            panels.push(Panel::new(left, at(slip_d[k]), false, p, vec![]));
+        }
+        let end = Pt { x: 1.0, u: 0.0 };
+        panels.push(Panel::new(
+            at(slip_d[slip_d.len() - 1]),
+            end,
+            false,
+            vec![block(Weight::Right(-g), n)],
+            vec![],
+        ));
+        let mut offset = 0;
+        for p in panels.iter_mut() {
+            p.p_offset = offset;
+            offset += p.np();
+            p.q_offset = offset;
+            offset += p.nq();
+        }
+        Some(Mesh {
+            c,
+            w,
+            panels,
+            c_stick,
+            c_slip,
+            unknowns: offset,
+        })
+    }
+
+    /// Index of the panel holding the point x of [0, 1).
+    pub fn locate(&self, x: Pt) -> usize {
+        self.panels
+            .iter()
+            .position(|p| x.minus(p.b) < 0.0)
+            .unwrap_or(self.panels.len() - 1)
+    }
+}

@@ -1,0 +1,358 @@
+//! The collocation system for a fixed stick edge c: (E1) H[p] = bp q on 0 < x < 1, (E2)
+//! H[q] = -bq p on 0 < x < c, (E3) q = mu p on c < x < 1 built into the basis, (E4)
+//! int p = 1, with p even and q odd (so H over (-1, 1) is the panel integral at x plus or
+//! minus the mirrored one at -x). Unknowns: the coefficients of the panel bases of
+//! [`super::mesh`], including the two wrong-c modes (|x| - c)^(g-1) whose coefficient kappa
+//! vanishes exactly at the physical c (the compatibility condition, THEORY.md section 5).
+//!
+//! Each panel gets OVERSAMPLE times as many collocation points (Gauss-Legendre points of the
+//! panel) as it has unknowns; (E1) with p ~ (1-x)^(-g) has index 1, so (E4) fixes the scale.
+
+use super::cauchy::{Weight, WeightedFamily, legendre};
+use super::mesh::{Block, Layout, Mesh, Panel, Pt};
+use crate::error::{Error, Result};
+use crate::quadrature::gauss_legendre;
+use faer::Mat;
+use faer::linalg::solvers::SolveLstsq;
+use std::f64::consts::PI;
+
+/// Collocation points per unknown: the oversampled system is solved in the least-squares
+/// sense (Householder QR), which keeps the redundant singular-plus-regular bases of the
+/// panels at c from amplifying rounding errors.
+const OVERSAMPLE: usize = 2;
+
+/// Problem constants as the system uses them.
+#[derive(Clone, Copy, Debug)]
+pub struct Constants {
+    /// Coupling of q into (E1).
+    pub bp: f64,
+    /// Coupling of p into (E2).
+    pub bq: f64,
+    /// Friction coefficient.
+    pub mu: f64,
+    /// Edge exponent g = 1/2 - atan(bp mu) / pi.
+    pub g: f64,
+}
+
+/// The Cauchy-transform families of every weight the mesh uses, for order n.
+#[derive(Clone, Debug)]
+pub struct Families {
+    fams: Vec<WeightedFamily>,
+}
+
+impl Families {
+    /// Families for exponent g and order n (Legendre degrees below n).
+    pub fn new(g: f64, n: usize) -> Self {
+        let weights = [
+            Weight::One,
+            Weight::Right(g),
+            Weight::Right(g - 1.0),
+            Weight::Left(g),
+            Weight::Left(g - 1.0),
+            Weight::Right(-g),
+            Weight::Left(-0.5),
+            Weight::Left(0.5),
+        ];
+        Self {
+            fams: weights.iter().map(|&w| WeightedFamily::new(w, n)).collect(),
+        }
+    }
+
+    /// The family of weight w.
+    pub fn get(&self, w: Weight) -> &WeightedFamily {
+        self.fams
+            .iter()
+            .find(|f| f.weight == w)
+            .unwrap_or(&self.fams[0])
+    }
+}
+
+/// Values of a block's functions at local coordinate t (with 1 - t, 1 + t given accurately),
+/// written to out[..count]; `leg` is scratch for Legendre values.
+pub fn block_values(b: &Block, t: f64, omt: f64, opt: f64, leg: &mut [f64], out: &mut [f64]) {
+    let w = match b.weight {
+        Weight::One => 1.0,
+        Weight::Right(e) => omt.powf(e),
+        Weight::Left(e) => opt.powf(e),
+    };
+    legendre(t, &mut leg[..b.count]);
+    for (o, l) in out[..b.count].iter_mut().zip(leg.iter()) {
+        *o = w * l;
+    }
+}
+
+/// A solved discretisation at fixed c.
+#[derive(Clone, Debug)]
+pub struct Discrete {
+    /// The mesh.
+    pub mesh: Mesh,
+    /// Coefficients of all panel bases.
+    pub coef: Vec<f64>,
+    /// Physical coefficient of q's (c - x)^(g - 1) mode: zero at the physical c.
+    pub kappa: f64,
+    /// Physical coefficient of p's (x - c)^(g - 1) mode on the slip side.
+    pub kappa_p: f64,
+    /// The constants.
+    pub k: Constants,
+}
+
+/// One collocation row: which equation and where.
+struct Row {
+    e2: bool,
+    panel: usize,
+    x: Pt,
+    t: f64,
+    omt: f64,
+    opt: f64,
+}
+
+fn rows(mesh: &Mesh) -> Vec<Row> {
+    let mut rows = Vec::with_capacity(mesh.unknowns);
+    let last = mesh.panels.len() - 1;
+    for (ip, p) in mesh.panels.iter().enumerate() {
+        let counts = [
+            (false, OVERSAMPLE * p.np() - usize::from(ip == last)),
+            (true, OVERSAMPLE * p.nq()),
+        ];
+        for (e2, count) in counts {
+            if count == 0 {
+                continue;
+            }
+            for t in gauss_legendre(count).0 {
+                let x = if p.central {
+                    let x = p.h * (0.5 * (1.0 + t)).sqrt();
+                    Pt { x, u: 1.0 - x }
+                } else {
+                    Pt::local(p.m, p.h, t)
+                };
+                rows.push(Row {
+                    e2,
+                    panel: ip,
+                    x,
+                    t,
+                    omt: 1.0 - t,
+                    opt: 1.0 + t,
+                });
+            }
+        }
+    }
+    rows
+}
+
+/// Adds the Hilbert-transform contributions of `blocks` on panel `q` at target x to
+/// `row[offset..]`: scale * (C(y) + sign * C(y')) / pi, y' the mirrored target.
+#[allow(clippy::too_many_arguments)]
+fn add_hilbert(
+    fams: &Families,
+    q: &Panel,
+    blocks: &[Block],
+    offset: usize,
+    x: Pt,
+    sign: f64,
+    scale: f64,
+    buf: &mut [f64],
+    buf2: &mut [f64],
+    row: &mut [f64],
+) {
+    let mut col = offset;
+    if q.central {
+        // [-l, l] in Y = 2 x^2/l^2 - 1: p = f(Y) gives x (l^2/2)^(-1/2) C[(1+Y)^(-1/2) f],
+        // q = x f(Y) gives (l^2/2)^(1/2) C[(1+Y)^(1/2) f] (`sign` < 0: p, > 0: q)
+        let r = x.x / q.h;
+        let yy = 2.0 * r * r - 1.0;
+        let half = q.h * std::f64::consts::FRAC_1_SQRT_2;
+        let (fam, factor) = if sign < 0.0 {
+            (fams.get(Weight::Left(-0.5)), x.x / half)
+        } else {
+            (fams.get(Weight::Left(0.5)), half)
+        };
+        for b in blocks {
+            fam.cauchy(yy, &mut buf[..b.count]);
+            for u in &buf[..b.count] {
+                row[col] += scale * factor * u / PI;
+                col += 1;
+            }
+        }
+        return;
+    }
+    let y = x.minus(q.m) / q.h;
+    let ym = -(x.x + q.m.x) / q.h;
+    for b in blocks {
+        let fam = fams.get(b.weight);
+        fam.cauchy(y, &mut buf[..b.count]);
+        fam.cauchy(ym, &mut buf2[..b.count]);
+        for (u, v) in buf[..b.count].iter().zip(&buf2[..b.count]) {
+            row[col] += scale * (u + sign * v) / PI;
+            col += 1;
+        }
+    }
+}
+
+/// Assembles and solves the system for stick edge (c, w = 1 - c) at order n.
+pub fn solve_fixed(
+    k: Constants,
+    c: f64,
+    w: f64,
+    n: usize,
+    fams: &Families,
+    layout: &Layout,
+) -> Result<Discrete> {
+    if !(c > 1e-300 && w > 1e-300 && c <= 1.0 && w <= 1.0) {
+        return Err(Error::NoConvergence(format!(
+            "coupled: trial stick edge c = {c}, 1 - c = {w} out of range"
+        )));
+    }
+    let mesh = Mesh::new(c, w, n, k.g, k.bp > 0.0, layout).ok_or_else(|| {
+        Error::NoConvergence(format!("coupled: panel layout does not fit c = {c}"))
+    })?;
+    let nu = mesh.unknowns;
+    let rows = rows(&mesh);
+    let nr = rows.len() + 1;
+    let deg = n;
+    let (mut buf, mut buf2, mut leg, mut vals) = (
+        vec![0.0; deg],
+        vec![0.0; deg],
+        vec![0.0; deg],
+        vec![0.0; deg],
+    );
+    let mut a = Mat::<f64>::zeros(nr, nu);
+    let mut r = vec![0.0; nu];
+    for (i, row) in rows.iter().enumerate() {
+        r.fill(0.0);
+        let own = &mesh.panels[row.panel];
+        for q in &mesh.panels {
+            if !row.e2 {
+                add_hilbert(
+                    fams, q, &q.p, q.p_offset, row.x, -1.0, 1.0, &mut buf, &mut buf2, &mut r,
+                );
+            } else if q.stick {
+                add_hilbert(
+                    fams, q, &q.q, q.q_offset, row.x, 1.0, 1.0, &mut buf, &mut buf2, &mut r,
+                );
+            } else {
+                add_hilbert(
+                    fams, q, &q.p, q.p_offset, row.x, 1.0, k.mu, &mut buf, &mut buf2, &mut r,
+                );
+            }
+        }
+        // local terms: (E1) - bp q(x), (E2) + bq p(x)
+        let (blocks, mut col, scale) = if row.e2 {
+            (&own.p, own.p_offset, k.bq)
+        } else if own.stick {
+            let xf = if own.central { row.x.x } else { 1.0 };
+            (&own.q, own.q_offset, -k.bp * xf)
+        } else {
+            (&own.p, own.p_offset, -k.bp * k.mu)
+        };
+        for b in blocks {
+            block_values(b, row.t, row.omt, row.opt, &mut leg, &mut vals);
+            for v in &vals[..b.count] {
+                r[col] += scale * v;
+                col += 1;
+            }
+        }
+        let scale = 1.0 / r.iter().fold(0.0f64, |m, v| m.max(v.abs())).max(1e-300);
+        for (j, v) in r.iter().enumerate() {
+            a[(i, j)] = *v * scale;
+        }
+    }
+    // (E4): int_{-1}^{1} p = 1 (weighted row; the solution is rescaled to it exactly below)
+    let last = nr - 1;
+    let mut norm = vec![0.0; nu];
+    for p in &mesh.panels {
+        let mut col = p.p_offset;
+        // central: int_{-l}^{l} f(Y) dx = (l^2/2)^(1/2) int (1+Y)^(-1/2) f dY
+        let (factor, weight_of) = if p.central {
+            (
+                p.h * std::f64::consts::FRAC_1_SQRT_2,
+                Some(Weight::Left(-0.5)),
+            )
+        } else {
+            (2.0 * p.h, None)
+        };
+        for b in &p.p {
+            let fam = fams.get(weight_of.unwrap_or(b.weight));
+            for j in 0..b.count {
+                norm[col] = factor * fam.moment(j);
+                col += 1;
+            }
+        }
+    }
+    const NORM_WEIGHT: f64 = 1e3;
+    let nscale = NORM_WEIGHT / norm.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+    for (j, v) in norm.iter().enumerate() {
+        a[(last, j)] = v * nscale;
+    }
+    let mut rhs = Mat::<f64>::zeros(nr, 1);
+    rhs[(last, 0)] = nscale;
+    let x = a.col_piv_qr().solve_lstsq(&rhs);
+    let mut coef: Vec<f64> = (0..nu).map(|i| x[(i, 0)]).collect();
+    let mass: f64 = coef.iter().zip(&norm).map(|(c, v)| c * v).sum();
+    for v in coef.iter_mut() {
+        *v /= mass;
+    }
+    if coef.iter().any(|v| !v.is_finite()) {
+        return Err(Error::NoConvergence(format!(
+            "coupled system singular at c = {c}, n = {n}"
+        )));
+    }
+    let cs = &mesh.panels[mesh.c_stick];
+    let sl = &mesh.panels[mesh.c_slip];
+    let kappa = coef[cs.q_offset + 2 * n] * cs.h.powf(1.0 - k.g);
+    let kappa_p = if k.bp > 0.0 {
+        coef[sl.p_offset + 2 * n] * sl.h.powf(1.0 - k.g)
+    } else {
+        0.0
+    };
+    Ok(Discrete {
+        mesh,
+        coef,
+        kappa,
+        kappa_p,
+        k,
+    })
+}
+
+impl Discrete {
+    /// (p, q) at 0 <= x < 1 given as a [`Pt`].
+    pub fn eval(&self, x: Pt) -> (f64, f64) {
+        let ip = self.mesh.locate(x);
+        let panel = &self.mesh.panels[ip];
+        let (t, omt, opt) = panel.local(x);
+        let n = self.mesh.panels[0].p[0].count;
+        let mut leg = vec![0.0; n];
+        let mut vals = vec![0.0; n];
+        let sum = |blocks: &[Block], offset: usize, leg: &mut [f64], vals: &mut [f64]| {
+            let mut s = 0.0;
+            let mut col = offset;
+            for b in blocks {
+                // the wrong-c modes are O(discretisation error) at the physical c; their
+                // weight is infinite at c itself, where they are left out
+                let at_c = if b.wrong_c {
+                    omt.min(opt) == 0.0
+                } else {
+                    false
+                };
+                if !at_c {
+                    block_values(b, t, omt, opt, leg, vals);
+                    for v in &vals[..b.count] {
+                        s += v * self.coef[col];
+                        col += 1;
+                    }
+                } else {
+                    col += b.count;
+                }
+            }
+            s
+        };
+        let p = sum(&panel.p, panel.p_offset, &mut leg, &mut vals);
+        let q = if panel.central {
+            x.x * sum(&panel.q, panel.q_offset, &mut leg, &mut vals)
+        } else if panel.stick {
+            sum(&panel.q, panel.q_offset, &mut leg, &mut vals)
+        } else {
+            self.k.mu * p
+        };
+        (p, q)
+    }
+}

@@ -1,0 +1,380 @@
+//! Tests of the coupled solver against references independent of it: (E1), (E2) residuals and
+//! the slip-direction inequality from a separate composite quadrature of the returned
+//! tractions, Goodman's elliptic-integral equation at bp = 0, the reduction identity, and
+//! convergence under refinement.
+
+use super::*;
+use crate::quadrature::{gauss_jacobi, gauss_legendre};
+
+/// Isotropic plane strain, nu = 0.3: bp = bq = (1 - 2 nu) / (2 (1 - nu)) (THEORY.md section 2:
+/// A = (1-2nu)(1+nu)/E, B = C = 2(1-nu^2)/(pi E), bp = A / (pi C)).
+fn steel() -> f64 {
+    let nu = 0.3;
+    let (a, c) = ((1.0 - 2.0 * nu) * (1.0 + nu), 2.0 * (1.0 - nu * nu) / PI);
+    a / (PI * c)
+}
+
+/// Carbon/epoxy ply in plane stress (THEORY.md section 2): (bp, bq).
+fn carbon() -> (f64, f64) {
+    let (e11, e22, g12, nu12): (f64, f64, f64, f64) = (181e9, 10.3e9, 7.17e9, 0.28);
+    let e = (e11 * e22).sqrt();
+    let delta = (e11 / e22).sqrt().sqrt();
+    let nu = (nu12 * nu12 * e22 / e11).sqrt();
+    let kappa = e / (2.0 * g12) - nu;
+    let a = (1.0 - nu) / e;
+    let b = (2.0 * (1.0 + kappa)).sqrt() / (PI * delta * e);
+    let c = delta * (2.0 * (1.0 + kappa)).sqrt() / (PI * e);
+    (a / (PI * c), a / (PI * b))
+}
+
+/// Break points of the composite rule: dyadically graded towards the given points.
+fn graded(lo: f64, hi: f64, points: &[f64]) -> Vec<f64> {
+    let mut b = vec![lo, hi];
+    for &s in points {
+        if s > lo && s < hi {
+            b.push(s);
+        }
+        for k in 1..40 {
+            for v in [s - 0.5f64.powi(k), s + 0.5f64.powi(k)] {
+                if v > lo && v < hi {
+                    b.push(v);
+                }
+            }
+        }
+    }
+    b.sort_by(f64::total_cmp);
+    b.dedup();
+    b
+}
+
+/// Reference (1/pi) PV int_{-1}^{1} f(t) / (x - t) dt for f ~ (1 -+ t)^(-g) at the ends with
+/// kinks at +-c: singularity subtraction, 20-point Gauss-Legendre on pieces graded towards
+/// +-c and x, 30-point Gauss-Jacobi (weight (1 -+ t)^(-g)) on end pieces of width delta.
+fn hilbert_ref(f: &dyn Fn(f64) -> f64, x: f64, c: f64, w: f64, g: f64) -> f64 {
+    let fx = f(x);
+    let delta = (0.25 * w).min(0.5 * (1.0 - x.abs()));
+    let (gl, glw) = gauss_legendre(20);
+    let (gj, gjw) = gauss_jacobi(30, -g, 0.0);
+    let reg = |t: f64| (f(t) - fx) / (x - t);
+    let mut sum = 0.0;
+    for p in graded(-1.0 + delta, 1.0 - delta, &[-c, c, x]).windows(2) {
+        let (m, h) = (0.5 * (p[0] + p[1]), 0.5 * (p[1] - p[0]));
+        sum += h * gl
+            .iter()
+            .zip(&glw)
+            .map(|(s, v)| v * reg(m + h * s))
+            .sum::<f64>();
+    }
+    let h = 0.5 * delta;
+    for side in [1.0, -1.0] {
+        // t = side (1 - h (1 - s)): (1 - side t) = h (1 - s); f by Gauss-Jacobi, the
+        // subtracted f(x) / (x - t) (smooth here) by Gauss-Legendre
+        let t = |s: f64| side * (1.0 - h * (1.0 - s));
+        sum += h * gj
+            .iter()
+            .zip(&gjw)
+            .map(|(s, v)| v * (1.0 - s).powf(g) * f(t(*s)) / (x - t(*s)))
+            .sum::<f64>();
+        sum -= h * gl
+            .iter()
+            .zip(&glw)
+            .map(|(s, v)| v * fx / (x - t(*s)))
+            .sum::<f64>();
+    }
+    (sum + fx * ((1.0 + x) / (1.0 - x)).ln()) / PI
+}
+
+/// Reference int_a^b f for f smooth on [a, b] apart from kinks at the given points and
+/// (1 - t)^(-g) at b = 1.
+fn integral_ref(f: &dyn Fn(f64) -> f64, a: f64, b: f64, kinks: &[f64], g: f64, w: f64) -> f64 {
+    let (gl, glw) = gauss_legendre(20);
+    let delta = if b == 1.0 { 0.25 * w } else { 0.0 };
+    let mut sum = 0.0;
+    for p in graded(a, b - delta, kinks).windows(2) {
+        let (m, h) = (0.5 * (p[0] + p[1]), 0.5 * (p[1] - p[0]));
+        sum += h * gl
+            .iter()
+            .zip(&glw)
+            .map(|(s, v)| v * f(m + h * s))
+            .sum::<f64>();
+    }
+    if delta > 0.0 {
+        let (gj, gjw) = gauss_jacobi(30, -g, 0.0);
+        let h = 0.5 * delta;
+        sum += h * gj
+            .iter()
+            .zip(&gjw)
+            .map(|(s, v)| v * (1.0 - s).powf(g) * f(1.0 - h * (1.0 - s)))
+            .sum::<f64>();
+    }
+    sum
+}
+
+/// Checks (E1) on |x| < 1, (E2) on |x| < c, int p = 1, |q| <= mu p on the stick zone and the
+/// slip direction, all against the reference quadratures; returns the worst relative residual.
+fn check_solution(k: &Coupling, s: &CoupledSolution) -> f64 {
+    let e = s.edge();
+    let (c, w, g) = (e.c, e.one_minus_c, k.edge_exponent());
+    let p = |t: f64| s.tractions(t).0;
+    let q = |t: f64| s.tractions(t).1;
+    let mut worst: f64 = 0.0;
+    for i in 0..24 {
+        // (E1) at points spread over (-0.99, 0.99) (none exactly at +-c)
+        let x = -0.99 + 1.98 * (i as f64 + 0.37) / 24.0;
+        let (hp, qx) = (hilbert_ref(&p, x, c, w, g), q(x));
+        let r = (hp - k.bp * qx).abs() / (hp.abs() + (k.bp * qx).abs() + k.bq * p(x));
+        assert!(
+            r < 1e-8,
+            "(E1) at x = {x}: H[p] = {hp}, bp q = {}, rel {r:.2e}",
+            k.bp * qx
+        );
+        worst = worst.max(r);
+        // (E2) on the stick zone
+        let x = c * (-0.99 + 1.98 * (i as f64 + 0.41) / 24.0);
+        let (hq, px) = (hilbert_ref(&q, x, c, w, g), p(x));
+        let r = (hq + k.bq * px).abs() / (hq.abs() + (k.bq * px).abs());
+        assert!(
+            r < 1e-8,
+            "(E2) at x = {x}: H[q] = {hq}, bq p = {}, rel {r:.2e}",
+            k.bq * px
+        );
+        worst = worst.max(r);
+        // Coulomb on the stick zone
+        let (px, qx) = s.tractions(x);
+        assert!(qx.abs() <= k.mu * px * (1.0 + 1e-9), "|q| > mu p at {x}");
+    }
+    let mass = 2.0 * integral_ref(&p, 0.0, 1.0, &[c], g, w);
+    assert!((mass - 1.0).abs() < 1e-9, "int p = {mass}");
+    // slip direction: int_c^x (bq p + H[q]) dt >= 0 on the slip zone (tolerance: residual size)
+    let slip = |t: f64| k.bq * p(t) + hilbert_ref(&q, t, c, w, g);
+    for j in 1..=6 {
+        let x = 1.0 - w * (1.0 - j as f64 / 7.0);
+        let (gl, glw) = gauss_legendre(12);
+        let (m, h) = (0.5 * (c + x), 0.5 * (x - c));
+        let u: f64 = h * gl
+            .iter()
+            .zip(&glw)
+            .map(|(s, v)| v * slip(m + h * s))
+            .sum::<f64>();
+        assert!(u >= -1e-8 * w, "slip direction violated at x = {x}: {u}");
+    }
+    worst
+}
+
+#[test]
+fn mu_zero_is_the_flat_punch() {
+    let s = solve(
+        &Coupling {
+            bp: 0.3,
+            bq: 0.3,
+            mu: 0.0,
+        },
+        1e-12,
+    )
+    .unwrap();
+    assert_eq!(s.edge().c, 0.0);
+    for x in [-0.9, 0.0, 0.5] {
+        let (p, q) = s.tractions(x);
+        assert_eq!(q, 0.0);
+        assert_eq!(p, 1.0 / (PI * ((1.0 - x.abs()) * (1.0 + x.abs())).sqrt()));
+    }
+}
+
+#[test]
+fn invalid_input_is_an_error() {
+    for k in [
+        Coupling {
+            bp: -0.1,
+            bq: 0.3,
+            mu: 0.3,
+        },
+        Coupling {
+            bp: 0.1,
+            bq: 0.0,
+            mu: 0.3,
+        },
+        Coupling {
+            bp: 0.1,
+            bq: 0.3,
+            mu: f64::NAN,
+        },
+        Coupling {
+            bp: 2.0,
+            bq: 2.0,
+            mu: 0.3,
+        },
+    ] {
+        assert!(
+            matches!(solve(&k, 1e-10), Err(Error::InvalidArgument(_))),
+            "{k:?}"
+        );
+    }
+    let k = Coupling {
+        bp: 0.2,
+        bq: 0.2,
+        mu: 0.3,
+    };
+    assert!(matches!(solve(&k, 0.0), Err(Error::InvalidArgument(_))));
+    assert!(matches!(
+        solve(&k, 1e-30),
+        Err(Error::ToleranceNotMet { .. })
+    ));
+}
+
+/// bp = 0: p = p0 and c solves K(sqrt(1 - c^2)) / K(c) = bq / mu (Goodman), here by bisection
+/// on ellip::ellipk (parameter m = k^2).
+#[test]
+fn uncoupled_reproduces_goodman() {
+    for &(bq, mu) in &[(0.2857142857142857, 0.3), (0.5, 0.2), (0.3, 1.0)] {
+        let ratio = |c: f64| {
+            let kc = ellip::ellipk(c * c).unwrap();
+            let kp = ellip::ellipk((1.0 - c) * (1.0 + c)).unwrap();
+            kp / kc - bq / mu
+        };
+        let (mut lo, mut hi) = (1e-6, 1.0 - 1e-9);
+        for _ in 0..200 {
+            let mid = 0.5 * (lo + hi);
+            if ratio(mid) > 0.0 { lo = mid } else { hi = mid }
+        }
+        let k = Coupling { bp: 0.0, bq, mu };
+        let s = solve(&k, 1e-13).unwrap();
+        let c = s.edge().c;
+        assert!(
+            (c - lo).abs() < 1e-12,
+            "bq {bq} mu {mu}: c {c} vs Goodman {lo}"
+        );
+        for x in [0.0, 0.3, 0.9, 0.999] {
+            let p0 = 1.0 / (PI * (1.0f64 - x * x).sqrt());
+            assert!((s.tractions(x).0 / p0 - 1.0).abs() < 1e-9, "p at {x}");
+        }
+        check_solution(&k, &s);
+    }
+}
+
+/// (bp, bq, mu) and (b*, b*, mu / delta) give the same c and p, and q = delta q~.
+#[test]
+fn reduction_holds_to_rounding() {
+    let (bp, bq) = carbon();
+    let k = Coupling { bp, bq, mu: 0.3 };
+    let (r, delta) = k.reduced();
+    let (s, sr) = (solve(&k, 1e-11).unwrap(), solve(&r, 1e-11).unwrap());
+    assert!((s.edge().c - sr.edge().c).abs() <= 4.0 * f64::EPSILON * s.edge().c);
+    for x in [-0.95, -0.3, 0.02, 0.5, 0.99] {
+        let ((p, q), (pr, qr)) = (s.tractions(x), sr.tractions(x));
+        assert!((p - pr).abs() <= 1e-14 * p);
+        assert!((q - delta * qr).abs() <= 1e-14 * q.abs().max(1e-300));
+    }
+}
+
+/// Isotropic plane-strain steel at mu = 0.1, 0.3, 1, 5: residuals, admissibility and the
+/// claimed error; prints the table of c, 1 - c.
+#[test]
+fn isotropic_steel() {
+    let b = steel();
+    assert!((b - 2.0 / 7.0).abs() < 1e-15);
+    for mu in [0.1, 0.3, 1.0, 5.0] {
+        let k = Coupling { bp: b, bq: b, mu };
+        let s = solve(&k, 1e-10).unwrap();
+        let e = s.edge();
+        assert!(s.numerical_error() <= 1e-10 && e.c > 0.0 && e.c <= 1.0);
+        assert!((e.c + e.one_minus_c - 1.0).abs() < 1e-15);
+        let worst = check_solution(&k, &s);
+        println!(
+            "steel mu {mu}: c {:.15} 1-c {:.10e} est {:.1e} order {} residual {worst:.1e}",
+            e.c,
+            e.one_minus_c,
+            s.numerical_error(),
+            s.order()
+        );
+    }
+}
+
+#[test]
+fn carbon_ply() {
+    let (bp, bq) = carbon();
+    for mu in [0.1, 0.3, 1.0] {
+        let k = Coupling { bp, bq, mu };
+        let s = solve(&k, 1e-10).unwrap();
+        let worst = check_solution(&k, &s);
+        println!(
+            "carbon mu {mu}: c {:.15e} 1-c {:.10e} est {:.1e} residual {worst:.1e}",
+            s.edge().c,
+            s.edge().one_minus_c,
+            s.numerical_error()
+        );
+    }
+}
+
+/// Stick-zone edge at a fixed order n (no order loop).
+fn c_at_order(k: Constants, n: usize) -> f64 {
+    let fams = Families::new(k.g, n);
+    let mut level = Level {
+        k,
+        n,
+        fams: &fams,
+        layout: None,
+    };
+    edge_of(level.first_root(goodman_guess(k.bq, k.mu)).unwrap()).0
+}
+
+/// Geometric convergence in the order, and the error estimate bounds the true error.
+#[test]
+fn convergence_and_error_estimate() {
+    let b = steel();
+    let k = Coupling {
+        bp: b,
+        bq: b,
+        mu: 0.3,
+    };
+    let consts = Constants {
+        bp: b,
+        bq: b,
+        mu: 0.3,
+        g: k.edge_exponent(),
+    };
+    let reference = c_at_order(consts, 28);
+    let mut errors = Vec::new();
+    for n in [4usize, 6, 8, 10, 12, 14, 16] {
+        let err = (c_at_order(consts, n) - reference).abs();
+        println!("order {n:2}: |c - c_ref| = {err:.2e}");
+        errors.push(err);
+    }
+    assert!(errors[6] < 1e-11, "order 16 error {}", errors[6]);
+    assert!(
+        errors[1] > 1e3 * errors[5].max(1e-16),
+        "not geometric: {errors:?}"
+    );
+    for tol in [1e-4, 1e-7, 1e-10] {
+        let s = solve(&k, tol).unwrap();
+        let true_err = (s.edge().c - reference).abs();
+        assert!(s.numerical_error() <= tol);
+        assert!(
+            true_err <= s.numerical_error().max(1e-13),
+            "tol {tol}: {true_err} > estimate"
+        );
+    }
+}
+
+/// Small friction: a tiny stick zone; large friction: 1 - c small but finite.
+#[test]
+fn friction_extremes() {
+    let (bp, bq) = carbon();
+    let k = Coupling { bp, bq, mu: 0.03 };
+    let s = solve(&k, 1e-14).unwrap();
+    assert!(s.edge().c > 0.0 && s.edge().c < 1e-12, "c = {}", s.edge().c);
+    println!(
+        "carbon mu 0.03: c = {:.6e} (est {:.1e})",
+        s.edge().c,
+        s.numerical_error()
+    );
+    let b = 0.45;
+    let k = Coupling {
+        bp: b,
+        bq: b,
+        mu: 20.0,
+    };
+    let s = solve(&k, 1e-10).unwrap();
+    println!("b* 0.45 mu 20: 1 - c = {:.6e}", s.edge().one_minus_c);
+    assert!(s.edge().one_minus_c > 1e-6);
+    check_solution(&k, &s);
+}
