@@ -4,17 +4,16 @@
 //! (COUPLED.md "Local exponents").
 //!
 //! Near the panel (|y| <= 1.1) C_0 is evaluated in closed form and the rest follow from the
-//! exact recurrence (k+1) C_{k+1} + k C_{k-1} = (2k+1) (y C_k - M_k), M_k = int w P_k; far
-//! from it a Gauss-Jacobi rule for w is exact to rounding (the integrand is analytic in a
-//! Bernstein ellipse of parameter >= 1.55).
+//! exact recurrence (k+1) C_{k+1} + k C_{k-1} = (2k+1) (y C_k - M_k), M_k = int w P_k
+//! (forward recurrence: stable for |y| <= 1.02 at the degrees used); farther away a
+//! Gauss-Jacobi rule for w, sized to the distance, is exact to rounding.
 
 use crate::quadrature::gauss_jacobi;
 use std::f64::consts::PI;
 
-/// Nodes of the far-field rule: 1.55^(-2 * 44) < 1e-16.
-const FAR_NODES: usize = 96;
-/// |y| above which the far-field rule is used.
-const NEAR_LIMIT: f64 = 1.02;
+/// Far-field rules: (|y| above which it is used, nodes), Bernstein parameter
+/// rho(y) = |y| + sqrt(y^2 - 1) and rho^(-2 nodes) < 1e-17 in each range.
+const FAR_RULES: [(f64, usize); 3] = [(4.0, 16), (1.5, 32), (1.02, 96)];
 
 /// Endpoint weight of a panel basis function on [-1, 1].
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -153,9 +152,8 @@ pub struct WeightedFamily {
     pub weight: Weight,
     /// Number of Legendre degrees handled (0..degrees).
     pub degrees: usize,
-    nodes: Vec<f64>,
-    /// Gauss weights times P_k(node): row-major [node][k].
-    wp: Vec<f64>,
+    /// Per far rule: nodes and Gauss weights times P_k(node), row-major [node][k].
+    far: Vec<(Vec<f64>, Vec<f64>)>,
     moments: Vec<f64>,
 }
 
@@ -163,22 +161,31 @@ impl WeightedFamily {
     /// Family for `weight` and Legendre degrees below `degrees`.
     pub fn new(weight: Weight, degrees: usize) -> Self {
         let (a, b) = weight.exponents();
-        let (nodes, weights) = gauss_jacobi(FAR_NODES, a, b);
-        let mut wp = vec![0.0; FAR_NODES * degrees];
+        let far: Vec<(Vec<f64>, Vec<f64>)> = FAR_RULES
+            .iter()
+            .map(|&(_, count)| {
+                let (nodes, weights) = gauss_jacobi(count, a, b);
+                let mut wp = vec![0.0; count * degrees];
+                for (j, (&t, &w)) in nodes.iter().zip(&weights).enumerate() {
+                    let row = &mut wp[j * degrees..(j + 1) * degrees];
+                    legendre(t, row);
+                    row.iter_mut().for_each(|v| *v *= w);
+                }
+                (nodes, wp)
+            })
+            .collect();
+        // moments from the largest rule (exact for degrees < 2 * 96)
+        let (nodes, wp) = &far[far.len() - 1];
         let mut moments = vec![0.0; degrees];
-        for (j, (&t, &w)) in nodes.iter().zip(&weights).enumerate() {
-            let row = &mut wp[j * degrees..(j + 1) * degrees];
-            legendre(t, row);
-            for (k, v) in row.iter_mut().enumerate() {
-                *v *= w;
-                moments[k] += *v;
+        for j in 0..nodes.len() {
+            for (m, v) in moments.iter_mut().zip(&wp[j * degrees..(j + 1) * degrees]) {
+                *m += v;
             }
         }
         Self {
             weight,
             degrees,
-            nodes,
-            wp,
+            far,
             moments,
         }
     }
@@ -192,14 +199,12 @@ impl WeightedFamily {
     pub fn cauchy(&self, y: f64, out: &mut [f64]) {
         let n = out.len().min(self.degrees);
         let stride = self.degrees;
-        if y.abs() > NEAR_LIMIT {
+        if let Some(r) = FAR_RULES.iter().position(|&(lim, _)| y.abs() > lim) {
+            let (nodes, wp) = &self.far[r];
             out[..n].fill(0.0);
-            for (j, &t) in self.nodes.iter().enumerate() {
+            for (j, &t) in nodes.iter().enumerate() {
                 let inv = 1.0 / (y - t);
-                for (o, v) in out[..n]
-                    .iter_mut()
-                    .zip(&self.wp[j * stride..j * stride + n])
-                {
+                for (o, v) in out[..n].iter_mut().zip(&wp[j * stride..j * stride + n]) {
                     *o += v * inv;
                 }
             }

@@ -37,7 +37,7 @@ use system::{Constants, Discrete, Families, solve_fixed};
 const SCAN_STEP: f64 = 1.0;
 
 /// Polynomial orders tried in turn (per panel).
-const ORDERS: [usize; 6] = [8, 12, 16, 20, 24, 28];
+const ORDERS: [usize; 5] = [6, 11, 16, 21, 26];
 
 /// The coupled solution: stick edge, error estimate and the discretised tractions.
 #[derive(Clone, Debug)]
@@ -118,6 +118,10 @@ struct Level<'a> {
     fams: &'a Families,
     /// Fixed panel layout while refining a bracket (None: each c its own layout).
     layout: Option<Layout>,
+    /// The last two evaluations (t, kappa), for the slope at the root.
+    hist: [(f64, f64); 2],
+    /// Accuracy wanted in t (a small fraction of the order's own error in c).
+    xtol: f64,
 }
 
 impl Level<'_> {
@@ -132,6 +136,7 @@ impl Level<'_> {
             }
         };
         let kappa = solve_fixed(self.k, c, w, self.n, self.fams, layout)?.kappa;
+        self.hist = [self.hist[1], (t, kappa)];
         if kappa.is_finite() {
             Ok(kappa)
         } else {
@@ -147,6 +152,7 @@ impl Level<'_> {
 
     /// Brent's method on kappa(t) in [a, b] with kappa(a) < 0 < kappa(b).
     fn brent(&mut self, mut a: f64, mut b: f64, mut fa: f64, mut fb: f64) -> Result<f64> {
+        let xtol = self.xtol;
         let (mut c, mut fc) = (a, fa);
         let (mut d, mut e) = (b - a, b - a);
         for _ in 0..100 {
@@ -158,7 +164,7 @@ impl Level<'_> {
             if fc.abs() < fb.abs() {
                 (a, fa, b, fb, c, fc) = (b, fb, c, fc, b, fb);
             }
-            let tol = 4.0 * f64::EPSILON * b.abs().max(1.0);
+            let tol = xtol.max(4.0 * f64::EPSILON * b.abs().max(1.0));
             let m = 0.5 * (c - b);
             if m.abs() <= tol || fb == 0.0 {
                 return Ok(b);
@@ -234,9 +240,40 @@ impl Level<'_> {
     }
 
     /// The root near t_prev (from a lower order), bracketed by a growing step.
-    fn root_near(&mut self, t_prev: f64, first: f64) -> Result<f64> {
+    /// d kappa / dt from the last two evaluations.
+    fn slope(&self) -> f64 {
+        let [(t0, f0), (t1, f1)] = self.hist;
+        (f1 - f0) / (t1 - t0)
+    }
+
+    /// The root near t_prev (from a lower order) by the secant method started with the
+    /// lower order's slope, stopped when the step is below xtol; if that fails, by bracketing
+    /// and Brent. Returns t and its uncertainty |step| + |kappa| / |slope| at the last
+    /// iterate (which also measures the rounding noise of kappa).
+    fn root_near(&mut self, t_prev: f64, slope: f64, first: f64) -> Result<(f64, f64)> {
         self.fix_layout(t_prev);
         let f = self.kappa(t_prev)?;
+        if slope.is_finite() && slope != 0.0 {
+            let (mut t0, mut f0) = (t_prev, f);
+            let mut t1 = t0 - f0 / slope;
+            for _ in 0..6 {
+                let f1 = self.kappa(t1)?;
+                let s = if f1 == f0 {
+                    slope
+                } else {
+                    (f1 - f0) / (t1 - t0)
+                };
+                let step = -f1 / s;
+                if !step.is_finite() || step.abs() > 1.0 || s * slope <= 0.0 {
+                    break;
+                }
+                if step.abs() <= self.xtol || f1 == 0.0 {
+                    return Ok((t1 + step, 2.0 * step.abs()));
+                }
+                (t0, f0) = (t1, f1);
+                t1 += step;
+            }
+        }
         let mut step = 1e-6f64.max(4.0 * first);
         while step < 8.0 {
             let (lo, hi) = (t_prev - step, t_prev + step);
@@ -247,7 +284,7 @@ impl Level<'_> {
             };
             if f_lo < 0.0 && f_hi >= 0.0 {
                 let (a, b) = if f < 0.0 { (t_prev, hi) } else { (lo, t_prev) };
-                return self.brent(a, b, f_lo, f_hi);
+                return Ok((self.brent(a, b, f_lo, f_hi)?, self.xtol));
             }
             step *= 4.0;
         }
@@ -313,27 +350,46 @@ pub fn solve(k: &Coupling, tol: f64) -> Result<CoupledSolution> {
     };
     let mut prev: Option<f64> = None;
     let mut last_diff = 0.0;
+    let mut slope = f64::NAN;
+    let fams = Families::new(consts.g, ORDERS[ORDERS.len() - 1]);
     for &n in &ORDERS {
-        let fams = Families::new(consts.g, n);
+        // first order: t to 1e-6 (its own error is larger anyway); later orders: c to 5% of
+        // the tolerance
+        let xtol = match prev {
+            None => 1e-6,
+            Some(t) => {
+                let (c, w) = edge_of(t);
+                (0.05 * tol / (c * w)).clamp(1e-13, 1e-3)
+            }
+        };
+        let mut t_unc = 0.0;
         let mut level = Level {
             k: consts,
             n,
             fams: &fams,
             layout: None,
+            hist: [(f64::NAN, f64::NAN); 2],
+            xtol,
         };
         let t = match prev {
             None => level.first_root(goodman_guess(r.bq, r.mu))?,
-            Some(t_prev) => level.root_near(t_prev, last_diff)?,
+            Some(t_prev) => {
+                let (t, unc) = level.root_near(t_prev, slope, last_diff)?;
+                t_unc = unc;
+                t
+            }
         };
         let (c, w) = edge_of(t);
         if let Some(t_prev) = prev {
             let (c_prev, w_prev) = edge_of(t_prev);
             // |c - c_prev| from whichever of c, 1 - c is small
+            // |c - c_prev| from whichever of c, 1 - c is small, plus the root's own
+            // uncertainty (dc = c (1 - c) dt)
             let diff = if c < 0.5 {
                 (c - c_prev).abs()
             } else {
                 (w - w_prev).abs()
-            };
+            } + c * w * t_unc;
             last_diff = (t - t_prev).abs();
             if diff <= tol {
                 let layout = level.layout.unwrap_or_else(|| Layout::for_edge(c, w));
@@ -365,6 +421,7 @@ pub fn solve(k: &Coupling, tol: f64) -> Result<CoupledSolution> {
             }
         }
         prev = Some(t);
+        slope = level.slope();
     }
     Err(Error::Internal("coupled: order loop fell through".into()))
 }

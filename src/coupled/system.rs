@@ -313,43 +313,50 @@ pub fn solve_fixed(
     })
 }
 
+/// sum_k a_k P_k(t) by the three-term recurrence (no allocation).
+fn legendre_sum(a: &[f64], t: f64) -> f64 {
+    let (mut p_prev, mut p) = (0.0, 1.0);
+    let mut s = 0.0;
+    for (k, ak) in a.iter().enumerate() {
+        s += ak * p;
+        let kf = k as f64;
+        let next = ((2.0 * kf + 1.0) * t * p - kf * p_prev) / (kf + 1.0);
+        p_prev = p;
+        p = next;
+    }
+    s
+}
+
 impl Discrete {
+    /// sum over `blocks` of weight * Legendre series (wrong-c modes left out exactly at c,
+    /// where their weight is infinite; elsewhere they are O(discretisation error)).
+    fn series(&self, blocks: &[Block], offset: usize, t: f64, omt: f64, opt: f64) -> f64 {
+        let mut s = 0.0;
+        let mut col = offset;
+        for b in blocks {
+            let coef = &self.coef[col..col + b.count];
+            col += b.count;
+            let w = match b.weight {
+                Weight::One => 1.0,
+                Weight::Right(e) => omt.powf(e),
+                Weight::Left(e) => opt.powf(e),
+            };
+            if w.is_finite() {
+                s += w * legendre_sum(coef, t);
+            }
+        }
+        s
+    }
+
     /// (p, q) at 0 <= x < 1 given as a [`Pt`].
     pub fn eval(&self, x: Pt) -> (f64, f64) {
-        let ip = self.mesh.locate(x);
-        let panel = &self.mesh.panels[ip];
+        let panel = &self.mesh.panels[self.mesh.locate(x)];
         let (t, omt, opt) = panel.local(x);
-        let n = self.mesh.panels[0].p[0].count;
-        let mut leg = vec![0.0; n];
-        let mut vals = vec![0.0; n];
-        let sum = |blocks: &[Block], offset: usize, leg: &mut [f64], vals: &mut [f64]| {
-            let mut s = 0.0;
-            let mut col = offset;
-            for b in blocks {
-                // the wrong-c modes are O(discretisation error) at the physical c; their
-                // weight is infinite at c itself, where they are left out
-                let at_c = if b.wrong_c {
-                    omt.min(opt) == 0.0
-                } else {
-                    false
-                };
-                if !at_c {
-                    block_values(b, t, omt, opt, leg, vals);
-                    for v in &vals[..b.count] {
-                        s += v * self.coef[col];
-                        col += 1;
-                    }
-                } else {
-                    col += b.count;
-                }
-            }
-            s
-        };
-        let p = sum(&panel.p, panel.p_offset, &mut leg, &mut vals);
+        let p = self.series(&panel.p, panel.p_offset, t, omt, opt);
         let q = if panel.central {
-            x.x * sum(&panel.q, panel.q_offset, &mut leg, &mut vals)
+            x.x * self.series(&panel.q, panel.q_offset, t, omt, opt)
         } else if panel.stick {
-            sum(&panel.q, panel.q_offset, &mut leg, &mut vals)
+            self.series(&panel.q, panel.q_offset, t, omt, opt)
         } else {
             self.k.mu * p
         };

@@ -313,6 +313,8 @@ fn c_at_order(k: Constants, n: usize) -> f64 {
         n,
         fams: &fams,
         layout: None,
+        hist: [(f64::NAN, f64::NAN); 2],
+        xtol: 0.0,
     };
     edge_of(level.first_root(goodman_guess(k.bq, k.mu)).unwrap()).0
 }
@@ -378,3 +380,4 @@ fn friction_extremes() {
     assert!(s.edge().one_minus_c > 1e-6);
     check_solution(&k, &s);
 }
+
