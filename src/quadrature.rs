@@ -85,6 +85,18 @@ fn jacobi_matrix(n: usize, alpha: f64, beta: f64) -> (Vec<f64>, Vec<f64>) {
     (diag, off)
 }
 
+/// sqrt(a^2 + b^2) without overflow (cheaper than `f64::hypot`, to a few ulps).
+fn pythag(a: f64, b: f64) -> f64 {
+    let (a, b) = (a.abs(), b.abs());
+    if a > b {
+        a * (1.0 + (b / a) * (b / a)).sqrt()
+    } else if b == 0.0 {
+        0.0
+    } else {
+        b * (1.0 + (a / b) * (a / b)).sqrt()
+    }
+}
+
 /// Eigenvalues (ascending) of the symmetric tridiagonal matrix (d, e) by implicit QL with
 /// Wilkinson shifts. `e[i]` couples rows i and i + 1.
 fn tridiagonal_eigenvalues(mut d: Vec<f64>, off: &[f64]) -> Vec<f64> {
@@ -105,7 +117,7 @@ fn tridiagonal_eigenvalues(mut d: Vec<f64>, off: &[f64]) -> Vec<f64> {
                 break;
             }
             let mut g = (d[l + 1] - d[l]) / (2.0 * e[l]);
-            let mut r = g.hypot(1.0);
+            let mut r = pythag(g, 1.0);
             g = d[m] - d[l] + e[l] / (g + r.copysign(g));
             let (mut s, mut c, mut p) = (1.0, 1.0, 0.0);
             let mut i = m;
@@ -114,7 +126,7 @@ fn tridiagonal_eigenvalues(mut d: Vec<f64>, off: &[f64]) -> Vec<f64> {
                 i -= 1;
                 let f = s * e[i];
                 let b = c * e[i];
-                r = f.hypot(g);
+                r = pythag(f, g);
                 e[i + 1] = r;
                 if r == 0.0 {
                     d[i + 1] -= p;
@@ -142,26 +154,26 @@ fn tridiagonal_eigenvalues(mut d: Vec<f64>, off: &[f64]) -> Vec<f64> {
 }
 
 /// Orthonormal recurrence at x: returns (P_n(x), P_n'(x), sum_{k<n} p_k(x)^2), where P_n is
-/// the (unnormalised last step of the) degree-n polynomial whose zeros are the nodes.
-fn recurrence(x: f64, diag: &[f64], off: &[f64]) -> (f64, f64, f64) {
-    let n = diag.len();
+/// the (unnormalised last step of the) degree-n polynomial whose zeros are the nodes;
+/// `inv_off[k]` = 1 / off[k] (and 1 for the last step).
+fn recurrence(x: f64, diag: &[f64], off: &[f64], inv_off: &[f64]) -> (f64, f64, f64) {
     let (mut p_prev, mut p) = (0.0, 1.0);
     let (mut d_prev, mut dp) = (0.0, 0.0);
     let mut sum = 1.0;
-    for k in 0..n {
-        let e_prev = if k == 0 { 0.0 } else { off[k - 1] };
-        let scale = if k + 1 < n { off[k] } else { 1.0 };
-        let p_next = ((x - diag[k]) * p - e_prev * p_prev) / scale;
-        let d_next = ((x - diag[k]) * dp + p - e_prev * d_prev) / scale;
+    let mut e_prev = 0.0;
+    for k in 0..diag.len() {
+        let xd = x - diag[k];
+        let p_next = (xd * p - e_prev * p_prev) * inv_off[k];
+        let d_next = (xd * dp + p - e_prev * d_prev) * inv_off[k];
         p_prev = p;
         p = p_next;
         d_prev = dp;
         dp = d_next;
-        if k + 1 < n {
-            sum += p * p;
-        }
+        sum += p * p;
+        e_prev = off.get(k).copied().unwrap_or(0.0);
     }
-    (p, dp, sum)
+    // the last step's value (the unnormalised P_n) is not a p_k with k < n
+    (p, dp, sum - p * p)
 }
 
 /// Gauss-Jacobi rule with n nodes for int_{-1}^{1} f(x) (1 - x)^alpha (1 + x)^beta dx:
@@ -173,11 +185,12 @@ pub fn gauss_jacobi(n: usize, alpha: f64, beta: f64) -> (Vec<f64>, Vec<f64>) {
     }
     let (diag, off) = jacobi_matrix(n, alpha, beta);
     let mut nodes = tridiagonal_eigenvalues(diag.clone(), &off);
+    let inv_off: Vec<f64> = off.iter().map(|e| 1.0 / e).chain([1.0]).collect();
     let mass = jacobi_mass(alpha, beta);
     let mut weights = Vec::with_capacity(n);
     for x in nodes.iter_mut() {
         for _ in 0..3 {
-            let (p, dp, _) = recurrence(*x, &diag, &off);
+            let (p, dp, _) = recurrence(*x, &diag, &off, &inv_off);
             if dp == 0.0 || !dp.is_finite() {
                 break;
             }
@@ -189,7 +202,7 @@ pub fn gauss_jacobi(n: usize, alpha: f64, beta: f64) -> (Vec<f64>, Vec<f64>) {
                 break;
             }
         }
-        let (_, _, sum) = recurrence(*x, &diag, &off);
+        let (_, _, sum) = recurrence(*x, &diag, &off, &inv_off);
         weights.push(mass / sum);
     }
     (nodes, weights)

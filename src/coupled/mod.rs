@@ -14,7 +14,7 @@
 //!
 //! Which root: kappa < 0 for small c (checked at a c far below Goodman's estimate, walking
 //! down until it is; never above c = 1/2), then c is increased in steps of 1 in t until kappa
-//! changes sign: the
+//! (at the cheap order 4) changes sign: the
 //! first sign change met from c = 0 brackets the physical root (the one continuous in mu from
 //! small friction), which Brent's method then refines. The solution is checked for
 //! |q| <= mu p on the stick zone before it is returned.
@@ -35,6 +35,9 @@ use system::{Constants, Discrete, Families, solve_fixed};
 /// Step in t = ln(c / (1 - c)) of the scan for the first root (the roots near full stick
 /// repeat every pi / eps >= 12 in ln(1 - c) for b* < 0.99).
 const SCAN_STEP: f64 = 1.0;
+
+/// Order of the scan for the first sign change of kappa (only its sign is used).
+const SCAN_ORDER: usize = 4;
 
 /// Polynomial orders tried in turn (per panel).
 const ORDERS: [usize; 5] = [6, 11, 16, 21, 26];
@@ -202,8 +205,11 @@ impl Level<'_> {
         Err(Error::NoConvergence("Brent iteration limit in c".into()))
     }
 
-    /// First sign change of kappa met increasing c from 0, then refined.
+    /// First sign change of kappa met increasing c from 0 (scanned at order SCAN_ORDER),
+    /// then refined at this level's order.
     fn first_root(&mut self, t0: f64) -> Result<f64> {
+        let order = self.n;
+        self.n = SCAN_ORDER.min(order);
         // never start above c = 1/2: for large friction Goodman's c is far too close to 1,
         // beyond further roots of the oscillatory near-full-stick regime
         let mut lo = (t0 - 1.0).min(0.0);
@@ -221,14 +227,19 @@ impl Level<'_> {
             let hi = lo + SCAN_STEP;
             let f_hi = self.kappa(hi)?;
             if f_hi >= 0.0 {
+                // the scan order's sign may be off within its error of the root: widen once
+                self.n = order;
                 self.fix_layout(0.5 * (lo + hi));
-                let (f_lo, f_hi) = (self.kappa(lo)?, self.kappa(hi)?);
-                if !(f_lo < 0.0 && f_hi >= 0.0) {
-                    return Err(Error::NoConvergence(format!(
-                        "kappa changes sign with the panel layout near t = {lo}"
-                    )));
+                for widen in [0.0, 0.5] {
+                    let (a, b) = (lo - widen, hi + widen);
+                    let (f_a, f_b) = (self.kappa(a)?, self.kappa(b)?);
+                    if f_a < 0.0 && f_b >= 0.0 {
+                        return self.brent(a, b, f_a, f_b);
+                    }
                 }
-                return self.brent(lo, hi, f_lo, f_hi);
+                return Err(Error::NoConvergence(format!(
+                    "kappa changes sign with the panel layout or order near t = {lo}"
+                )));
             }
             lo = hi;
             if lo > 40.0 {
@@ -269,6 +280,12 @@ impl Level<'_> {
                 }
                 if step.abs() <= self.xtol || f1 == 0.0 {
                     return Ok((t1 + step, 2.0 * step.abs()));
+                }
+                if f1.abs() >= f0.abs() {
+                    // no progress: kappa's rounding noise reached; its size sets the
+                    // uncertainty of t
+                    let best = if f1.abs() < f0.abs() { t1 } else { t0 };
+                    return Ok((best, 2.0 * (f0.abs().max(f1.abs()) / slope.abs())));
                 }
                 (t0, f0) = (t1, f1);
                 t1 += step;

@@ -19,7 +19,7 @@ use std::f64::consts::PI;
 /// Collocation points per unknown: the oversampled system is solved in the least-squares
 /// sense (Householder QR), which keeps the redundant singular-plus-regular bases of the
 /// panels at c from amplifying rounding errors.
-const OVERSAMPLE: usize = 2;
+const OVERSAMPLE: f64 = 2.0;
 
 /// Problem constants as the system uses them.
 #[derive(Clone, Copy, Debug)]
@@ -106,13 +106,18 @@ struct Row {
     opt: f64,
 }
 
+/// Number of collocation points for `count` unknowns.
+fn oversampled(count: usize) -> usize {
+    (OVERSAMPLE * count as f64).ceil() as usize
+}
+
 fn rows(mesh: &Mesh) -> Vec<Row> {
     let mut rows = Vec::with_capacity(mesh.unknowns);
     let last = mesh.panels.len() - 1;
     for (ip, p) in mesh.panels.iter().enumerate() {
         let counts = [
-            (false, OVERSAMPLE * p.np() - usize::from(ip == last)),
-            (true, OVERSAMPLE * p.nq()),
+            (false, oversampled(p.np()) - usize::from(ip == last)),
+            (true, oversampled(p.nq())),
         ];
         for (e2, count) in counts {
             if count == 0 {
@@ -313,14 +318,25 @@ pub fn solve_fixed(
     })
 }
 
-/// sum_k a_k P_k(t) by the three-term recurrence (no allocation).
+/// Recurrence factors (2k+1)/(k+1) and k/(k+1) of the Legendre polynomials, k < 64.
+const LEGENDRE_AB: [(f64, f64); 64] = {
+    let mut t = [(0.0, 0.0); 64];
+    let mut k = 0;
+    while k < 64 {
+        let kf = k as f64;
+        t[k] = ((2.0 * kf + 1.0) / (kf + 1.0), kf / (kf + 1.0));
+        k += 1;
+    }
+    t
+};
+
+/// sum_k a_k P_k(t) by the three-term recurrence (no allocation, no division).
 fn legendre_sum(a: &[f64], t: f64) -> f64 {
     let (mut p_prev, mut p) = (0.0, 1.0);
     let mut s = 0.0;
-    for (k, ak) in a.iter().enumerate() {
+    for (ak, (fa, fb)) in a.iter().zip(LEGENDRE_AB.iter()) {
         s += ak * p;
-        let kf = k as f64;
-        let next = ((2.0 * kf + 1.0) * t * p - kf * p_prev) / (kf + 1.0);
+        let next = fa * t * p - fb * p_prev;
         p_prev = p;
         p = next;
     }
