@@ -18,6 +18,11 @@
 //! first sign change met from c = 0 brackets the physical root (the one continuous in mu from
 //! small friction), which Brent's method then refines. The solution is checked for
 //! |q| <= mu p on the stick zone before it is returned.
+//!
+//! Range: 2e-35 < c and 1 - c > 4e-18 (outside it NoConvergence says so); the number of
+//! panels grows like log(1 / min(c, 1 - c)). Cost (measured, one core): 15-80 ms per solve
+//! to tol = 1e-10 for c in [1e-5, 1 - 2e-3] (100-400 unknowns, a few least-squares solves
+//! per order); tractions afterwards 40-60 ns per point.
 
 pub mod cauchy;
 pub mod mesh;
@@ -219,7 +224,8 @@ impl Level<'_> {
             steps += 1;
             if steps > 30 || lo < -80.0 {
                 return Err(Error::NoConvergence(
-                    "no small stick zone with kappa < 0 found".into(),
+                    "kappa >= 0 down to c = 2e-35: the stick zone is below the solver's range"
+                        .into(),
                 ));
             }
         }
@@ -244,7 +250,9 @@ impl Level<'_> {
             lo = hi;
             if lo > 40.0 {
                 return Err(Error::NoConvergence(
-                    "kappa(c) has no sign change below 1 - c = 4e-18".into(),
+                    "no sign change of kappa for 1 - c >= 4e-18: the slip zones are below the \
+                     solver's range"
+                        .into(),
                 ));
             }
         }
