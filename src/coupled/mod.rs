@@ -45,7 +45,7 @@ const SCAN_STEP: f64 = 1.0;
 const SCAN_ORDER: usize = 4;
 
 /// Polynomial orders tried in turn (per panel).
-const ORDERS: [usize; 5] = [6, 11, 16, 21, 26];
+const ORDERS: [usize; 5] = [6, 12, 16, 21, 26];
 
 /// The coupled solution: stick edge, error estimate and the discretised tractions.
 #[derive(Clone, Debug)]
