@@ -3,7 +3,7 @@
 use crate::error::{Error, Result};
 use crate::material::Material;
 use crate::problem::{Coupling, Profile, StickEdge};
-use crate::{goodman, lcp, spence};
+use crate::{coupled, goodman, lcp, spence};
 
 /// Solution methods; the discriminants are the C ABI's `orthoslip_method` values.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -102,6 +102,10 @@ impl Contact {
         let (method, profile): (Method, Box<dyn Profile>) = match self.method {
             Method::Goodman => (Method::Goodman, Box::new(goodman::solve(&k)?)),
             Method::Spence => (Method::Spence, Box::new(spence::solve(&k)?)),
+            Method::Coupled => (
+                Method::Coupled,
+                Box::new(coupled::solve(&k, self.tolerance)?),
+            ),
             Method::Lcp => (
                 Method::Lcp,
                 Box::new(lcp::solve_to_tolerance(&k, self.tolerance)?),

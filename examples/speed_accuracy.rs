@@ -1,0 +1,252 @@
+//! Speed against accuracy: every method at every resolution it offers, on a fixed set of
+//! scenes, timed per solve and compared with a high-accuracy COUPLED solution computed in the
+//! same run (error in c, and max traction error on |x| <= 0.99).
+//!
+//! Run: `cargo run --release --example speed_accuracy` (one core is enough; writes
+//! docs/speed_accuracy.csv, docs/speed_accuracy_medians.md and docs/speed_accuracy.svg).
+//! `--quick` skips LCP at N = 3200 (tens of seconds per solve).
+
+mod support;
+
+use std::fmt::Write as _;
+use std::time::{Duration, Instant};
+
+use orthoslip::{Coupling, Material, Profile, coupled, goodman, lcp, spence};
+use support::plot::{Scale, Series, chart};
+
+/// A scene: a name, a material and a friction coefficient.
+struct Scene {
+    name: String,
+    coupling: Coupling,
+}
+
+fn scenes() -> Vec<Scene> {
+    let materials = [
+        (
+            "carbon/epoxy ply",
+            Material::plane_stress(181e9, 10.3e9, 7.17e9, 0.28).unwrap(),
+        ),
+        (
+            "isotropic steel, plane strain",
+            Material::plane_strain(210e9, 210e9, 210e9, 210e9 / 2.6, 0.3, 0.3, 0.3).unwrap(),
+        ),
+        (
+            "kappa = 0.4 < 1 (complex roots)",
+            Material::effective(1.0, 0.25, 1.3, 0.4).unwrap(),
+        ),
+        (
+            "strongly orthotropic, delta = 10",
+            Material::effective(1.0, 0.1, 10.0, 3.0).unwrap(),
+        ),
+    ];
+    let mut out = Vec::new();
+    for (name, m) in materials {
+        for mu in [0.1, 0.3, 1.0] {
+            out.push(Scene {
+                name: format!("{name}, mu = {mu}"),
+                coupling: m.coupling(mu),
+            });
+        }
+    }
+    out
+}
+
+/// Median wall time of repeated solves (at least 3 runs and 0.2 s, at most 200 runs).
+fn time_solve<P>(solve: impl Fn() -> orthoslip::Result<P>) -> Option<(Duration, P)> {
+    let mut times = Vec::new();
+    let start = Instant::now();
+    let mut last = None;
+    while times.len() < 3 || (start.elapsed() < Duration::from_millis(200) && times.len() < 200) {
+        let t = Instant::now();
+        let r = solve().ok()?;
+        times.push(t.elapsed());
+        last = Some(r);
+        if times.len() == 1 && times[0] > Duration::from_secs(2) {
+            break;
+        }
+    }
+    times.sort();
+    Some((times[times.len() / 2], last?))
+}
+
+/// Max traction error on |x| <= 0.99 relative to the reference's scale.
+fn traction_error(s: &dyn Profile, r: &dyn Profile) -> f64 {
+    let xs: Vec<f64> = (0..=198).map(|i| -0.99 + 0.01 * i as f64).collect();
+    let refs: Vec<(f64, f64)> = xs.iter().map(|&x| r.tractions(x)).collect();
+    let q_scale = refs
+        .iter()
+        .fold(0.0_f64, |m, t| m.max(t.1.abs()))
+        .max(1e-300);
+    xs.iter()
+        .zip(&refs)
+        .map(|(&x, &(pr, qr))| {
+            let (p, q) = s.tractions(x);
+            ((p - pr).abs() / pr).max((q - qr).abs() / q_scale)
+        })
+        .fold(0.0, f64::max)
+}
+
+struct Row {
+    scene: usize,
+    method: &'static str,
+    resolution: String,
+    seconds: f64,
+    c: f64,
+    c_error: f64,
+    estimate: f64,
+    traction_error: f64,
+}
+
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let quick = std::env::args().any(|a| a == "--quick");
+    std::fs::create_dir_all("docs")?;
+    let scenes = scenes();
+    let mut rows = Vec::new();
+    for (i, scene) in scenes.iter().enumerate() {
+        let k = scene.coupling;
+        let reference = coupled::solve(&k, 1e-13)
+            .or_else(|_| coupled::solve(&k, 1e-12))
+            .map_err(|e| format!("{}: reference: {e}", scene.name))?;
+        let c_ref = reference.edge().c;
+        eprintln!(
+            "{}: c = {c_ref:.15} (+- {:.1e})",
+            scene.name,
+            reference.numerical_error()
+        );
+        let mut record =
+            |method: &'static str, resolution: String, t: Duration, s: &dyn Profile| {
+                rows.push(Row {
+                    scene: i,
+                    method,
+                    resolution,
+                    seconds: t.as_secs_f64(),
+                    c: s.edge().c,
+                    c_error: (s.edge().c - c_ref).abs(),
+                    estimate: s.numerical_error(),
+                    traction_error: traction_error(s, &reference),
+                })
+            };
+        if let Some((t, s)) = time_solve(|| goodman::solve(&k)) {
+            record("GOODMAN", "-".into(), t, &s);
+        }
+        if let Some((t, s)) = time_solve(|| spence::solve(&k)) {
+            record("SPENCE", "-".into(), t, &s);
+        }
+        for tol in [1e-4, 1e-6, 1e-8, 1e-10, 1e-12] {
+            if let Some((t, s)) = time_solve(|| coupled::solve(&k, tol)) {
+                record("COUPLED", format!("tol {tol:.0e}"), t, &s);
+            }
+        }
+        let max_n = if quick { 800 } else { 3200 };
+        let mut n = 50;
+        while n <= max_n {
+            if let Some((t, s)) = time_solve(|| lcp::solve(&k, n)) {
+                record("LCP", format!("N {n}"), t, &s);
+            }
+            n *= 2;
+        }
+    }
+    let mut csv = String::from(
+        "scene,method,resolution,seconds_per_solve,c,c_error,own_estimate,traction_error\n",
+    );
+    for r in &rows {
+        writeln!(
+            csv,
+            "\"{}\",{},{},{:e},{:.16e},{:e},{:e},{:e}",
+            scenes[r.scene].name,
+            r.method,
+            r.resolution,
+            r.seconds,
+            r.c,
+            r.c_error,
+            r.estimate,
+            r.traction_error
+        )?;
+    }
+    std::fs::write("docs/speed_accuracy.csv", csv)?;
+
+    // Medians over scenes per (method, resolution).
+    let mut keys: Vec<(&str, String)> = Vec::new();
+    for r in &rows {
+        if !keys.iter().any(|k| k.0 == r.method && k.1 == r.resolution) {
+            keys.push((r.method, r.resolution.clone()));
+        }
+    }
+    let median = |mut v: Vec<f64>| {
+        v.sort_by(f64::total_cmp);
+        v[v.len() / 2]
+    };
+    let mut md = String::from(
+        "| method | resolution | median time per solve | median error in c | median traction error (|x| <= 0.99) | scenes |\n|---|---|---|---|---|---|\n",
+    );
+    for (method, res) in &keys {
+        let sel: Vec<&Row> = rows
+            .iter()
+            .filter(|r| r.method == *method && &r.resolution == res)
+            .collect();
+        let t = median(sel.iter().map(|r| r.seconds).collect());
+        let e = median(sel.iter().map(|r| r.c_error).collect());
+        let te = median(sel.iter().map(|r| r.traction_error).collect());
+        writeln!(
+            md,
+            "| {method} | {res} | {} | {e:.1e} | {te:.1e} | {} |",
+            fmt_time(t),
+            sel.len()
+        )?;
+    }
+    std::fs::write("docs/speed_accuracy_medians.md", &md)?;
+    print!("{md}");
+
+    // Chart: error in c against time per solve, one series per method, Pareto front.
+    let mut series: Vec<Series> = Vec::new();
+    for method in ["GOODMAN", "SPENCE", "LCP", "COUPLED"] {
+        let pts: Vec<(f64, f64)> = rows
+            .iter()
+            .filter(|r| r.method == method)
+            .map(|r| (r.seconds, r.c_error.max(1e-16)))
+            .collect();
+        if !pts.is_empty() {
+            series.push(Series {
+                name: method.to_string(),
+                points: pts,
+                line: false,
+            });
+        }
+    }
+    let mut all: Vec<(f64, f64)> = series.iter().flat_map(|s| s.points.clone()).collect();
+    all.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let mut front = Vec::new();
+    let mut best = f64::INFINITY;
+    for p in all {
+        if p.1 < best {
+            best = p.1;
+            front.push(p);
+        }
+    }
+    chart(
+        "docs/speed_accuracy.svg",
+        "error in c against time per solve (all scenes)",
+        ("time per solve [s]", Scale::Log),
+        ("|c - c_exact|", Scale::Log),
+        &series,
+        Some(&Series {
+            name: "Pareto front".into(),
+            points: front,
+            line: true,
+        }),
+    )?;
+    println!(
+        "wrote docs/speed_accuracy.csv, docs/speed_accuracy_medians.md, docs/speed_accuracy.svg"
+    );
+    Ok(())
+}
+
+fn fmt_time(t: f64) -> String {
+    if t < 1e-3 {
+        format!("{:.1} us", t * 1e6)
+    } else if t < 1.0 {
+        format!("{:.2} ms", t * 1e3)
+    } else {
+        format!("{t:.2} s")
+    }
+}
