@@ -2,6 +2,7 @@
 
 use crate::error::{Error, Result};
 use crate::material::Material;
+use crate::model_error::{self, Approximation};
 use crate::problem::{Coupling, Profile, StickEdge};
 use crate::{coupled, goodman, lcp, spence};
 
@@ -96,29 +97,46 @@ impl Contact {
         self.material.coupling(self.mu)
     }
 
-    /// Solves the scene with the chosen method.
+    /// Solves the scene with the chosen method; AUTO picks the cheapest method whose error
+    /// estimate meets the tolerance ([`Contact::auto_choice`]).
     pub fn solve(&self) -> Result<Solution> {
         let k = self.coupling();
-        let (method, profile): (Method, Box<dyn Profile>) = match self.method {
-            Method::Goodman => (Method::Goodman, Box::new(goodman::solve(&k)?)),
-            Method::Spence => (Method::Spence, Box::new(spence::solve(&k)?)),
-            Method::Coupled => (
-                Method::Coupled,
-                Box::new(coupled::solve(&k, self.tolerance)?),
-            ),
-            Method::Lcp => (
-                Method::Lcp,
-                Box::new(lcp::solve_to_tolerance(&k, self.tolerance)?),
-            ),
-            m => {
-                return Err(Error::InvalidArgument(format!(
-                    "method {m:?} is not available in this version"
-                )));
-            }
+        let method = match self.method {
+            Method::Auto => self.auto_choice(&k),
+            m => m,
         };
-        let c_error = profile.numerical_error();
+        let tol = self.tolerance;
+        let profile: Box<dyn Profile> = match method {
+            Method::Goodman => Box::new(goodman::solve(&k)?),
+            Method::Spence => Box::new(spence::solve(&k)?),
+            Method::Coupled | Method::Auto => Box::new(coupled::solve(&k, tol)?),
+            Method::Lcp => Box::new(lcp::solve_to_tolerance(&k, tol)?),
+        };
+        let model = match method {
+            Method::Goodman => model_bound(Approximation::Goodman, &k),
+            Method::Spence => model_bound(Approximation::Spence, &k),
+            _ => 0.0,
+        };
+        let c_error = profile.numerical_error() + model;
         Ok(Solution::new(method, k, profile, c_error))
     }
+
+    /// AUTO's choice: Goodman if its certified model error (the table of
+    /// [`crate::model_error`]) is within the tolerance, else Spence if its is, else COUPLED.
+    pub fn auto_choice(&self, k: &Coupling) -> Method {
+        [
+            (Method::Goodman, Approximation::Goodman),
+            (Method::Spence, Approximation::Spence),
+        ]
+        .into_iter()
+        .find(|&(_, a)| model_error::bound(a, k).is_some_and(|b| b <= self.tolerance))
+        .map_or(Method::Coupled, |(m, _)| m)
+    }
+}
+
+/// The model-error bound of an approximation, +infinity where none is certified.
+fn model_bound(a: Approximation, k: &Coupling) -> f64 {
+    model_error::bound(a, k).unwrap_or(f64::INFINITY)
 }
 
 /// A solved scene: the stick edge, the method used, its error estimate and the tractions.
@@ -160,7 +178,9 @@ impl Solution {
         self.edge().one_minus_c
     }
 
-    /// Estimate of |c - c_exact|, c_exact being the exact solution of the coupled problem.
+    /// Estimate of |c - c_exact|, c_exact being the exact solution of the coupled problem:
+    /// discretisation error for COUPLED and LCP, certified model error (plus rounding) for
+    /// GOODMAN and SPENCE, +infinity where no model-error bound is available.
     pub fn error_estimate(&self) -> f64 {
         self.c_error
     }

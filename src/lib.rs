@@ -23,10 +23,11 @@ pub mod goodman;
 pub mod material;
 pub mod problem;
 // solver modules:
-pub mod spence;
-pub mod lcp;
-pub mod quadrature;
 pub mod coupled;
+pub mod lcp;
+pub mod model_error;
+pub mod quadrature;
+pub mod spence;
 
 pub mod ffi;
 

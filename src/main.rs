@@ -33,31 +33,41 @@ fn main() {
     contact.set_friction(mu).expect("mu is valid");
     let mut best = None;
     println!(
-        "\n{:<8} {:>20} {:>12} {:>10} {:>12}",
-        "method", "c", "1 - c", "c error", "time/solve"
+        "\n{:<8} {:>9} {:>8} {:>19} {:>12} {:>10} {:>11}",
+        "method", "tolerance", "used", "c", "1 - c", "c error", "time/solve"
     );
-    for method in [
-        Method::Goodman,
-        Method::Spence,
-        Method::Lcp,
-        Method::Coupled,
-    ] {
+    let runs = [
+        (Method::Goodman, None),
+        (Method::Spence, None),
+        (Method::Lcp, Some(1e-3)),
+        (Method::Coupled, Some(1e-10)),
+        (Method::Auto, Some(1e-1)),
+        (Method::Auto, Some(1e-8)),
+    ];
+    for (method, tol) in runs {
         contact.set_method(method);
+        contact
+            .set_tolerance(tol.unwrap_or(orthoslip::contact::DEFAULT_TOLERANCE))
+            .expect("tolerance is valid");
         let t = Instant::now();
+        let name = format!("{method:?}");
+        let tol = tol.map_or("-".into(), |t| format!("{t:.0e}"));
         match contact.solve() {
             Ok(s) => {
                 let dt = t.elapsed();
                 println!(
-                    "{:<8} {:>20.16} {:>12.6e} {:>10.2e} {:>12.3?}",
-                    format!("{method:?}"),
+                    "{name:<8} {tol:>9} {:>8} {:>19.16} {:>12.6e} {:>10.2e} {:>11.3?}",
+                    format!("{:?}", s.method()),
                     s.c(),
                     s.one_minus_c(),
                     s.error_estimate(),
                     dt
                 );
-                best = Some(s);
+                if s.method() == Method::Coupled {
+                    best = Some(s);
+                }
             }
-            Err(e) => println!("{:<8} {e}", format!("{method:?}")),
+            Err(e) => println!("{name:<8} {tol:>9} {e}"),
         }
     }
     let Some(s) = best else { return };

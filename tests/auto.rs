@@ -1,0 +1,135 @@
+//! METHOD_AUTO and the model-error table behind it: the committed table is what the
+//! generator computes now, its bounds hold off the grid, and AUTO meets its tolerance against
+//! an independent COUPLED reference while picking the approximations where they suffice.
+
+use orthoslip::model_error::{
+    Approximation, B_STAR, FLOOR, LOG10_MU, bound, round_up, sample, tabulated,
+};
+use orthoslip::{Contact, Coupling, Material, Method, Profile, coupled, goodman, spence};
+
+#[test]
+fn committed_table_matches_a_fresh_computation() {
+    // Every 13th entry (row and column both vary): 24 COUPLED solves.
+    let mut checked = 0;
+    for idx in (0..B_STAR.len() * LOG10_MU.len()).step_by(13) {
+        let (i, j) = (idx / LOG10_MU.len(), idx % LOG10_MU.len());
+        let fresh = sample(B_STAR[i], 10f64.powf(LOG10_MU[j]));
+        for (a, pick) in [
+            (Approximation::Goodman, fresh.as_ref().map(|s| s.goodman)),
+            (Approximation::Spence, fresh.as_ref().map(|s| s.spence)),
+        ] {
+            let stored = tabulated(a)[i][j];
+            match pick {
+                Ok(e) => {
+                    assert!(
+                        (stored - round_up(e)).abs() <= 0.1 * e + 2.0 * FLOOR,
+                        "{a:?} at b* = {}, log10 mu~ = {}: table {stored:e}, fresh {e:e} \
+                         (regenerate: cargo run --release --example model_error_table)",
+                        B_STAR[i],
+                        LOG10_MU[j]
+                    );
+                    checked += 1;
+                }
+                Err(_) => assert!(stored.is_infinite()),
+            }
+        }
+    }
+    assert!(checked > 20, "only {checked} finite entries checked");
+}
+
+#[test]
+fn bounds_hold_off_the_grid() {
+    let mut rng = fastrand::Rng::with_seed(7);
+    let (mut tested, mut worst_ratio) = (0, 0.0_f64);
+    while tested < 16 {
+        let b = 0.05 + 0.9 * rng.f64();
+        let mu = 10f64.powf(-1.0 + 3.0 * rng.f64());
+        let k = Coupling { bp: b, bq: b, mu };
+        let Ok(exact) = coupled::solve(&k, 1e-11) else {
+            continue;
+        };
+        let e = exact.edge();
+        for (a, approx) in [
+            (Approximation::Goodman, goodman::solve(&k).unwrap().edge()),
+            (Approximation::Spence, spence::solve(&k).unwrap().edge()),
+        ] {
+            let err = if e.c > 0.5 {
+                (approx.one_minus_c - e.one_minus_c).abs()
+            } else {
+                (approx.c - e.c).abs()
+            };
+            if let Some(bd) = bound(a, &k) {
+                assert!(
+                    bd >= err,
+                    "{a:?} at b* = {b}, mu~ = {mu}: bound {bd:e} < error {err:e}"
+                );
+                worst_ratio = worst_ratio.max(err / bd);
+            }
+        }
+        tested += 1;
+    }
+    println!("largest true error / bound over the random points: {worst_ratio:.3}");
+}
+
+#[test]
+fn auto_meets_the_tolerance_and_uses_the_approximations_where_they_suffice() {
+    let scenes = [
+        Material::plane_stress(181e9, 10.3e9, 7.17e9, 0.28).unwrap(),
+        Material::plane_strain(210e9, 210e9, 210e9, 210e9 / 2.6, 0.3, 0.3, 0.3).unwrap(),
+        Material::effective(1.0, 0.25, 1.3, 0.4).unwrap(),
+        Material::effective(1.0, -0.5, 0.8, 1.5).unwrap(),
+    ];
+    let mut picks = std::collections::BTreeMap::<String, usize>::new();
+    for m in scenes {
+        for mu in [0.1, 0.3, 1.0, 3.0] {
+            let k = m.coupling(mu);
+            let Ok(reference) = coupled::solve(&k, 1e-12) else {
+                continue;
+            };
+            let c_ref = reference.edge();
+            let mut contact = Contact::new(m);
+            contact.set_friction(mu).unwrap();
+            for tol in [1e-1, 1e-2, 1e-4, 1e-6, 1e-8, 1e-10] {
+                contact.set_tolerance(tol).unwrap();
+                let s = match contact.solve() {
+                    Ok(s) => s,
+                    Err(e) => panic!("AUTO at mu = {mu}, tol = {tol:e}: {e}"),
+                };
+                let err = if c_ref.c > 0.5 {
+                    (s.one_minus_c() - c_ref.one_minus_c).abs()
+                } else {
+                    (s.c() - c_ref.c).abs()
+                };
+                assert!(
+                    err <= tol + 1e-12,
+                    "AUTO ({:?}) at mu = {mu}, tol = {tol:e}: error {err:e}",
+                    s.method()
+                );
+                assert!(s.error_estimate() <= tol, "estimate above tolerance");
+                // 1e-12: the rounding level of c from either solve.
+                assert!(
+                    s.error_estimate() + reference.numerical_error() + 1e-12 >= err,
+                    "AUTO ({:?}) at mu = {mu}, tol = {tol:e}: estimate {:e} below the true error {err:e}",
+                    s.method(),
+                    s.error_estimate()
+                );
+                assert_ne!(s.method(), Method::Auto);
+                // AUTO takes an approximation exactly when its certified bound allows it.
+                let g_ok = bound(Approximation::Goodman, &k).is_some_and(|b| b <= tol);
+                let s_ok = bound(Approximation::Spence, &k).is_some_and(|b| b <= tol);
+                let expected = if g_ok {
+                    Method::Goodman
+                } else if s_ok {
+                    Method::Spence
+                } else {
+                    Method::Coupled
+                };
+                assert_eq!(s.method(), expected);
+                *picks.entry(format!("{:?}", s.method())).or_default() += 1;
+            }
+        }
+    }
+    println!("AUTO's picks over the grid: {picks:?}");
+    assert!(picks.get("Goodman").copied().unwrap_or(0) > 0, "{picks:?}");
+    assert!(picks.get("Coupled").copied().unwrap_or(0) > 0, "{picks:?}");
+}
