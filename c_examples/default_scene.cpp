@@ -32,7 +32,7 @@ int main() {
         std::printf("green: A = %.17g, B = %.17g, C = %.17g\n", g.a, g.b, g.c);
 
         orthoslip::contact punch(ply);
-        punch.friction(mu).method(ORTHOSLIP_METHOD_GOODMAN);
+        punch.friction(mu).method(ORTHOSLIP_METHOD_AUTO);
         const auto s = punch.solve();
         std::printf("c = %.17g\n", s.stick_half_width());
         std::printf("1 - c = %.17g\n", s.slip_width());

@@ -28,7 +28,7 @@ program default_scene
 
   call check(orthoslip_contact_new(material, contact), 'orthoslip_contact_new')
   call check(orthoslip_contact_set_friction(contact, mu), 'orthoslip_contact_set_friction')
-  call check(orthoslip_contact_set_method(contact, ORTHOSLIP_METHOD_GOODMAN), &
+  call check(orthoslip_contact_set_method(contact, ORTHOSLIP_METHOD_AUTO), &
        'orthoslip_contact_set_method')
   call check(orthoslip_contact_solve(contact, solution), 'orthoslip_contact_solve')
 

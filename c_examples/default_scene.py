@@ -13,7 +13,7 @@ import sys
 from ctypes import POINTER, byref, c_char_p, c_double, c_int, c_size_t, c_void_p
 
 OK = 0
-METHOD_GOODMAN = 1
+METHOD_AUTO = 0
 METHOD_NAMES = {0: "AUTO", 1: "GOODMAN", 2: "SPENCE", 3: "COUPLED", 4: "LCP"}
 N_POINTS = 21
 
@@ -92,7 +92,7 @@ def run(lib):
         check(lib, lib.orthoslip_contact_new(material, byref(contact)), "orthoslip_contact_new")
         check(lib, lib.orthoslip_contact_set_friction(contact, mu),
               "orthoslip_contact_set_friction")
-        check(lib, lib.orthoslip_contact_set_method(contact, METHOD_GOODMAN),
+        check(lib, lib.orthoslip_contact_set_method(contact, METHOD_AUTO),
               "orthoslip_contact_set_method")
         check(lib, lib.orthoslip_contact_solve(contact, byref(solution)),
               "orthoslip_contact_solve")
