@@ -216,3 +216,8 @@ fn threads() {
 fn spence_residuals() {
     check_program("spence_residuals");
 }
+
+#[test]
+fn coupled_residuals() {
+    check_program("coupled_residuals");
+}

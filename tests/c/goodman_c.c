@@ -146,7 +146,7 @@ int main(void)
             CHECK_OK(orthoslip_solution_method(s, &used));
             CHECK_OK(orthoslip_solution_error_estimate(s, &err));
             CHECK(used == ORTHOSLIP_METHOD_GOODMAN);
-            CHECK(isfinite(err) && err >= 0.0);
+            CHECK(err >= 0.0); /* +INFINITY: no bound known */
             if (fabs(c - c_ref) > 1e-12 || rel_diff(w, w_ref) > 1e-10)
                 fprintf(stderr, "%s, mu = %g: c = %.17g (ref %.17g), 1 - c = %.17g (ref %.17g)\n",
                         mats[i].name, mu, c, c_ref, w, w_ref);

@@ -3,7 +3,7 @@
  *   valgrind by the harness);
  * - tractions: p = q = 0 for |x| > 1; p = +INFINITY, q = +-INFINITY at x = +-1; batch and
  *   single-point evaluation agree bitwise; x may alias p or q; n = 0 writes nothing;
- * - c and 1 - c are consistent; the error estimate is finite and >= 0; GOODMAN ignores the
+ * - c and 1 - c are consistent; the error estimate is >= 0 (not NaN); GOODMAN ignores the
  *   tolerance.
  * Contacts use tolerance 1e-2: this checks the interface, not accuracy, and keeps the
  * iterative methods cheap (also under valgrind). */
@@ -79,7 +79,7 @@ int main(void)
             CHECK_OK(orthoslip_solution_method(s, &used));
             CHECK(c > 0.0 && c < 1.0 && w > 0.0 && w <= 1.0);
             CHECK_LE(fabs((c + w) - 1.0), 4.0 * DBL_EPSILON);
-            CHECK(isfinite(err) && err >= 0.0);
+            CHECK(err >= 0.0); /* +INFINITY: no bound known */
             CHECK(used != ORTHOSLIP_METHOD_AUTO);
             CHECK(methods[j] == ORTHOSLIP_METHOD_AUTO || used == methods[j]);
             if (methods[j] == ORTHOSLIP_METHOD_GOODMAN) CHECK(c2 == c);
