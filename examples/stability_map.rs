@@ -1,0 +1,628 @@
+//! Stability map: where each method fails. c depends only on (b*, mu~) (THEORY.md section 4),
+//! so the methods are swept over that plane (b* in [0.02, 0.95], mu~ in [1e-3, 1e3]) and over
+//! the engineering-constant extremes that lead to its edges (section 5: mu -> 0 and -> infinity,
+//! kappa -> -nu, kappa = 1, delta far from 1, nu -> 1 i.e. A -> 0, near-incompressible plane
+//! strain, auxetic nu -> -1 i.e. b* -> 1). For every scene and method (GOODMAN, SPENCE, LCP on
+//! 200 panels, COUPLED to 1e-10) it records the status (converged, or the error kind), the
+//! LCP Newton iterations or the COUPLED order, c, 1 - c, the error in c against the COUPLED
+//! reference and the method's own estimate against that error (`numerical_error`, plus
+//! `model_error::bound` for GOODMAN and SPENCE, +infinity where the table gives none, as
+//! `Contact` reports it); COUPLED itself is checked against a tighter COUPLED run (1e-12).
+//!
+//! Run: `cargo run --release --example stability_map` (writes docs/stability_map.csv,
+//! docs/stability_{goodman,spence,lcp,coupled,status}.svg and prints a failure summary).
+
+mod support;
+
+use std::collections::BTreeMap;
+use std::fmt::Write as _;
+use std::panic::{AssertUnwindSafe, catch_unwind};
+use std::time::Instant;
+
+use orthoslip::model_error::{self, Approximation};
+use orthoslip::{
+    Coupling, Error, Material, Method, Profile, StickEdge, coupled, goodman, lcp, spence,
+};
+use support::plot::{Scale, Series, chart, heatmap};
+
+/// The methods mapped, in CSV order.
+const METHODS: [Method; 4] = [
+    Method::Goodman,
+    Method::Spence,
+    Method::Lcp,
+    Method::Coupled,
+];
+/// LCP panels per half-width.
+const LCP_PANELS: usize = 200;
+/// Tolerance of the COUPLED runs: the mapped one (also the reference of the other methods)
+/// and the tighter one that checks it.
+const COUPLED_TOL: f64 = 1e-10;
+const TIGHT_TOL: f64 = 1e-12;
+/// Value drawn in the heat maps where the method failed or no reference exists (|c - c*| < 1
+/// always, so it sits above every measured error).
+const NO_VALUE: f64 = 1.0;
+
+/// What one solve gave.
+enum Outcome {
+    Solved {
+        edge: StickEdge,
+        estimate: f64,
+        /// LCP Newton iterations on the finest grid, or the COUPLED order per panel.
+        iterations: Option<usize>,
+    },
+    Failed {
+        status: &'static str,
+        message: String,
+    },
+}
+
+/// One solve and its wall time.
+struct Run {
+    outcome: Outcome,
+    seconds: f64,
+}
+
+impl Run {
+    fn edge(&self) -> Option<StickEdge> {
+        match self.outcome {
+            Outcome::Solved { edge, .. } => Some(edge),
+            Outcome::Failed { .. } => None,
+        }
+    }
+
+    fn status(&self) -> &'static str {
+        match &self.outcome {
+            Outcome::Solved { .. } => "ok",
+            Outcome::Failed { status, .. } => status,
+        }
+    }
+}
+
+fn error_kind(e: &Error) -> &'static str {
+    match e {
+        Error::InvalidArgument(_) => "InvalidArgument",
+        Error::InadmissibleMaterial(_) => "InadmissibleMaterial",
+        Error::NoConvergence(_) => "NoConvergence",
+        Error::ToleranceNotMet { .. } => "ToleranceNotMet",
+        Error::Internal(_) => "Internal",
+    }
+}
+
+/// The model-error bound of an approximation, +infinity where none is tabulated.
+fn model(a: Approximation, k: &Coupling) -> f64 {
+    model_error::bound(a, k).unwrap_or(f64::INFINITY)
+}
+
+/// A solved profile with its estimate (`numerical_error` plus `model`), unless its edge breaks
+/// the contract: c in [0, 1] (c = 1 only as the rounding of 1 - w for w < 2^-53), 1 - c in
+/// (0, 1], an estimate >= 0 (+infinity: no bound known). A slip width that underflows to 0 is
+/// reported as `SlipUnderflow`.
+fn solved(p: &dyn Profile, model: f64, iterations: Option<usize>) -> Outcome {
+    let edge = p.edge();
+    let estimate = p.numerical_error() + model;
+    let w = edge.one_minus_c;
+    let valid = (0.0..=1.0).contains(&edge.c)
+        && (edge.c < 1.0 || w <= f64::EPSILON)
+        && ((edge.c + w) - 1.0).abs() <= 4.0 * f64::EPSILON
+        && w > 0.0
+        && w <= 1.0
+        && estimate >= 0.0;
+    let status = if valid {
+        return Outcome::Solved {
+            edge,
+            estimate,
+            iterations,
+        };
+    } else if w == 0.0 && edge.c == 1.0 {
+        "SlipUnderflow"
+    } else {
+        "InvalidResult"
+    };
+    Outcome::Failed {
+        status,
+        message: format!("edge {edge:?}, estimate {estimate:e}"),
+    }
+}
+
+/// Solves `k` by `method` (COUPLED to `tol`), catching errors and panics.
+fn run(method: Method, k: &Coupling, tol: f64) -> Run {
+    let start = Instant::now();
+    let result = catch_unwind(AssertUnwindSafe(|| -> orthoslip::Result<Outcome> {
+        Ok(match method {
+            Method::Goodman => solved(&goodman::solve(k)?, model(Approximation::Goodman, k), None),
+            Method::Spence => solved(&spence::solve(k)?, model(Approximation::Spence, k), None),
+            Method::Lcp => {
+                let s = lcp::solve(k, LCP_PANELS)?;
+                solved(&s, 0.0, Some(s.newton_iterations()))
+            }
+            Method::Coupled => {
+                let s = coupled::solve(k, tol)?;
+                solved(&s, 0.0, Some(s.order()))
+            }
+            Method::Auto => {
+                return Err(Error::InvalidArgument("AUTO is not mapped".into()));
+            }
+        })
+    }));
+    let outcome = match result {
+        Ok(Ok(o)) => o,
+        Ok(Err(e)) => Outcome::Failed {
+            status: error_kind(&e),
+            message: e.to_string(),
+        },
+        Err(_) => Outcome::Failed {
+            status: "panic",
+            message: "the solver panicked".into(),
+        },
+    };
+    Run {
+        outcome,
+        seconds: start.elapsed().as_secs_f64(),
+    }
+}
+
+/// |c_a - c_b|, from 1 - c when both edges are near 1 (no cancellation).
+fn edge_error(a: StickEdge, b: StickEdge) -> f64 {
+    if a.c > 0.5 && b.c > 0.5 {
+        (a.one_minus_c - b.one_minus_c).abs()
+    } else {
+        (a.c - b.c).abs()
+    }
+}
+
+/// A point of the map: where it comes from and its coupling.
+struct Scene {
+    family: &'static str,
+    label: String,
+    k: Coupling,
+}
+
+impl Scene {
+    fn b_star(&self) -> f64 {
+        self.k.b_star()
+    }
+
+    /// mu~ = mu / delta with delta = sqrt(bq / bp) (mu when bp = 0).
+    fn mu_tilde(&self) -> f64 {
+        if self.k.bp > 0.0 {
+            self.k.mu / (self.k.bq / self.k.bp).sqrt()
+        } else {
+            self.k.mu
+        }
+    }
+}
+
+/// Grid of the (b*, mu~) plane: b* linear, mu~ log.
+fn plane_axes() -> (Vec<f64>, Vec<f64>) {
+    let b: Vec<f64> = (0..12).map(|i| 0.02 + 0.93 * i as f64 / 11.0).collect();
+    let mu: Vec<f64> = (0..19).map(|i| 10f64.powf(-3.0 + i as f64 / 3.0)).collect();
+    (b, mu)
+}
+
+/// The engineering-constant extremes, each at a few friction coefficients.
+fn engineering_scenes() -> orthoslip::Result<Vec<Scene>> {
+    let e = 100e9;
+    let frictions = [1e-2, 0.3, 10.0];
+    let steel = Material::effective(e, 0.3, 1.0, 1.0)?;
+    let mut materials: Vec<(&'static str, String, Material)> = Vec::new();
+    for eps in [1e-3, 1e-6, 1e-9, 1e-12] {
+        materials.push((
+            "kappa->-nu",
+            format!("nu=0.3 kappa=-nu+{eps:e}"),
+            Material::effective(e, 0.3, 1.0, -0.3 + eps)?,
+        ));
+    }
+    for delta in [1.0, 3.0] {
+        materials.push((
+            "kappa=1",
+            format!("nu=0.3 delta={delta} kappa=1"),
+            Material::effective(e, 0.3, delta, 1.0)?,
+        ));
+    }
+    for delta in [1e-3, 1e-2, 1e-1, 10.0, 1e2, 1e3] {
+        materials.push((
+            "delta",
+            format!("nu=0.3 kappa=1 delta={delta:e}"),
+            Material::effective(e, 0.3, delta, 1.0)?,
+        ));
+    }
+    for eps in [1e-3, 1e-6, 1e-9] {
+        materials.push((
+            "nu->1",
+            format!("nu=1-{eps:e} kappa=1"),
+            Material::effective(e, 1.0 - eps, 1.0, 1.0)?,
+        ));
+    }
+    materials.push((
+        "plane-strain-nu0.499",
+        "isotropic plane strain nu=0.499".into(),
+        Material::plane_strain(e, e, e, e / (2.0 * 1.499), 0.499, 0.499, 0.499)?,
+    ));
+    for eps in [1e-2, 1e-4, 1e-6] {
+        materials.push((
+            "auxetic",
+            format!("nu=-1+{eps:e} kappa=1"),
+            Material::effective(e, -1.0 + eps, 1.0, 1.0)?,
+        ));
+    }
+    let mut scenes: Vec<Scene> = [1e-4, 1e-3, 1e-2, 1e-1, 1.0, 10.0, 1e2, 1e3]
+        .into_iter()
+        .map(|mu| Scene {
+            family: "friction",
+            label: format!("steel nu=0.3 mu={mu:e}"),
+            k: steel.coupling(mu),
+        })
+        .collect();
+    for (family, name, m) in materials {
+        for mu in frictions {
+            scenes.push(Scene {
+                family,
+                label: format!("{name} mu={mu}"),
+                k: m.coupling(mu),
+            });
+        }
+    }
+    Ok(scenes)
+}
+
+/// One scene solved by every method, with the references.
+struct Solved {
+    scene: Scene,
+    runs: Vec<Run>,
+    /// COUPLED to `TIGHT_TOL` (not run where COUPLED to `COUPLED_TOL` failed).
+    tight: Option<Run>,
+}
+
+impl Solved {
+    /// Every method, then the tighter COUPLED run where COUPLED converged.
+    fn new(scene: Scene) -> Self {
+        let runs: Vec<Run> = METHODS
+            .iter()
+            .map(|&m| run(m, &scene.k, COUPLED_TOL))
+            .collect();
+        let tight = match runs[METHODS.len() - 1].outcome {
+            Outcome::Solved { .. } => Some(run(Method::Coupled, &scene.k, TIGHT_TOL)),
+            Outcome::Failed { .. } => None,
+        };
+        Self { scene, runs, tight }
+    }
+
+    /// The COUPLED run at `COUPLED_TOL`.
+    fn coupled(&self) -> &Run {
+        &self.runs[METHODS.len() - 1]
+    }
+
+    /// The reference of method i: COUPLED, or the tighter COUPLED for COUPLED itself.
+    fn reference(&self, i: usize) -> Option<StickEdge> {
+        if METHODS[i] == Method::Coupled {
+            self.tight.as_ref()?.edge()
+        } else {
+            self.coupled().edge()
+        }
+    }
+
+    /// |c - c_ref| of method i, where both exist.
+    fn true_error(&self, i: usize) -> Option<f64> {
+        Some(edge_error(self.runs[i].edge()?, self.reference(i)?))
+    }
+
+    /// Accuracy of method i's reference.
+    fn reference_tol(i: usize) -> f64 {
+        if METHODS[i] == Method::Coupled {
+            TIGHT_TOL
+        } else {
+            COUPLED_TOL
+        }
+    }
+
+    /// Whether method i's estimate misses its true error by more than the reference's own
+    /// accuracy (None where there is nothing to compare).
+    fn underestimates(&self, i: usize) -> Option<bool> {
+        match self.runs[i].outcome {
+            Outcome::Solved { estimate, .. } => {
+                Some(self.true_error(i)? > estimate + Self::reference_tol(i))
+            }
+            Outcome::Failed { .. } => None,
+        }
+    }
+}
+
+fn csv_row(csv: &mut String, s: &Solved, name: &str, r: &Run, reference: Option<StickEdge>) {
+    let sc = &s.scene;
+    let opt = |v: Option<f64>| v.map_or(String::new(), |v| format!("{v:e}"));
+    let (iterations, c, w, estimate, message) = match &r.outcome {
+        Outcome::Solved {
+            edge,
+            estimate,
+            iterations,
+        } => (
+            iterations.map_or(String::new(), |n| n.to_string()),
+            Some(edge.c),
+            Some(edge.one_minus_c),
+            Some(*estimate),
+            String::new(),
+        ),
+        Outcome::Failed { message, .. } => (String::new(), None, None, None, message.clone()),
+    };
+    let err = r.edge().zip(reference).map(|(a, b)| edge_error(a, b));
+    let ratio = estimate.zip(err).map(|(e, t)| e / t);
+    let _ = writeln!(
+        csv,
+        "{},\"{}\",{:e},{:e},{:e},{:e},{:e},{name},{},{iterations},{},{},{},{},{},{},{},{:.3e},\"{}\"",
+        sc.family,
+        sc.label,
+        sc.b_star(),
+        sc.mu_tilde(),
+        sc.k.bp,
+        sc.k.bq,
+        sc.k.mu,
+        r.status(),
+        opt(c),
+        opt(w),
+        opt(estimate),
+        opt(reference.map(|e| e.c)),
+        opt(reference.map(|e| e.one_minus_c)),
+        opt(err),
+        opt(ratio),
+        r.seconds,
+        message.replace('"', "'"),
+    );
+}
+
+const CSV_HEADER: &str = "family,scene,b_star,mu_tilde,bp,bq,mu,method,status,iterations,c,\
+one_minus_c,estimate,reference_c,reference_one_minus_c,true_error,estimate_over_true,seconds,\
+message\n";
+
+fn method_name(m: Method) -> &'static str {
+    match m {
+        Method::Goodman => "GOODMAN",
+        Method::Spence => "SPENCE",
+        Method::Lcp => "LCP",
+        Method::Coupled => "COUPLED",
+        Method::Auto => "AUTO",
+    }
+}
+
+/// A heat-map value per plane cell (rows over b*, columns over mu~).
+fn grid_of(plane: &[Solved], n_mu: usize, f: impl Fn(&Solved) -> Option<f64>) -> Vec<Vec<f64>> {
+    plane
+        .chunks(n_mu)
+        .map(|row| row.iter().map(|s| f(s).unwrap_or(NO_VALUE)).collect())
+        .collect()
+}
+
+fn main() -> Result<(), Box<dyn std::error::Error>> {
+    std::fs::create_dir_all("docs")?;
+    let t0 = Instant::now();
+    let (b_axis, mu_axis) = plane_axes();
+    let mut plane = Vec::new();
+    for &b in &b_axis {
+        for &mu in &mu_axis {
+            plane.push(Solved::new(Scene {
+                family: "plane",
+                label: format!("b*={b:.4} mu~={mu:.3e}"),
+                k: Coupling { bp: b, bq: b, mu },
+            }));
+        }
+        eprintln!("b* = {b:.3}: {:.1} s", t0.elapsed().as_secs_f64());
+    }
+    let engineering: Vec<Solved> = engineering_scenes()?.into_iter().map(Solved::new).collect();
+    eprintln!("engineering scenes: {:.1} s", t0.elapsed().as_secs_f64());
+
+    let mut csv = String::from(CSV_HEADER);
+    for s in plane.iter().chain(&engineering) {
+        for (i, &m) in METHODS.iter().enumerate() {
+            csv_row(&mut csv, s, method_name(m), &s.runs[i], s.reference(i));
+        }
+        if let Some(t) = &s.tight {
+            csv_row(&mut csv, s, "COUPLED_TIGHT", t, None);
+        }
+    }
+    std::fs::write("docs/stability_map.csv", csv)?;
+
+    // Heat maps over the plane.
+    let n_mu = mu_axis.len();
+    let axes = (
+        ("friction mu~ = mu / delta", &mu_axis[..]),
+        ("b*", &b_axis[..]),
+    );
+    for (i, file) in [(0, "goodman"), (1, "spence")] {
+        heatmap(
+            &format!("docs/stability_{file}.svg"),
+            &format!(
+                "{}: |c - c_COUPLED| (contours 1e-2, 1e-4, 1e-6; no reference: 1)",
+                method_name(METHODS[i])
+            ),
+            axes.0,
+            axes.1,
+            &grid_of(&plane, n_mu, |s| s.true_error(i)),
+            &[1e-2, 1e-4, 1e-6],
+        )?;
+    }
+    heatmap(
+        "docs/stability_lcp.svg",
+        "LCP (200 panels): |c - c_COUPLED| (LCP failed or no reference: 1)",
+        axes.0,
+        axes.1,
+        &grid_of(&plane, n_mu, |s| s.true_error(2)),
+        &[1e-2, 1e-3, 1e-4],
+    )?;
+    heatmap(
+        "docs/stability_coupled.svg",
+        "COUPLED (tol 1e-10): |c - c(tol 1e-12)| (failed: 1; contours 1e-10, 1e-12)",
+        axes.0,
+        axes.1,
+        &grid_of(&plane, n_mu, |s| match s.coupled().outcome {
+            Outcome::Solved { .. } => s.true_error(3).map(|t| t.max(1e-16)),
+            Outcome::Failed { .. } => None,
+        }),
+        &[1e-10, 1e-12],
+    )?;
+    // COUPLED's estimate over its true error, both floored at the tight run's accuracy
+    // (differences below it are not resolved): one series per b*.
+    let floor = TIGHT_TOL;
+    let ratios: Vec<Series> = plane
+        .chunks(n_mu)
+        .map(|row| Series {
+            name: format!("b* = {:.3}", row[0].scene.b_star()),
+            points: row
+                .iter()
+                .filter_map(|s| {
+                    let Outcome::Solved { estimate, .. } = s.coupled().outcome else {
+                        return None;
+                    };
+                    let t = s.true_error(3)?;
+                    Some((s.scene.mu_tilde(), estimate.max(floor) / t.max(floor)))
+                })
+                .collect(),
+            line: true,
+        })
+        .collect();
+    chart(
+        "docs/stability_coupled_ratio.svg",
+        "COUPLED (tol 1e-10): estimate / |c - c(tol 1e-12)|, floored at 1e-12 (< 1: missed)",
+        ("friction mu~ = mu / delta", Scale::Log),
+        ("estimate / true error", Scale::Log),
+        &ratios,
+        Some(&Series {
+            name: "ratio 1".into(),
+            points: vec![(mu_axis[0], 1.0), (mu_axis[n_mu - 1], 1.0)],
+            line: true,
+        }),
+    )?;
+    // Where each method fails on the plane (markers, one series per method and status).
+    let mut failures: BTreeMap<String, Vec<(f64, f64)>> = BTreeMap::new();
+    for s in &plane {
+        for (i, &m) in METHODS.iter().enumerate() {
+            if let Outcome::Failed { status, .. } = s.runs[i].outcome {
+                // offset markers of different methods a little in b* so they do not hide
+                let y = s.scene.b_star() + 0.008 * (i as f64 - 1.5);
+                failures
+                    .entry(format!("{} {status}", method_name(m)))
+                    .or_default()
+                    .push((s.scene.mu_tilde(), y));
+            }
+        }
+    }
+    let mut series: Vec<Series> = failures
+        .into_iter()
+        .map(|(name, points)| Series {
+            name,
+            points,
+            line: false,
+        })
+        .collect();
+    // the corners of the plane, so that the axes cover it
+    series.push(Series {
+        name: "(plane corners)".into(),
+        points: vec![
+            (mu_axis[0], b_axis[0]),
+            (mu_axis[n_mu - 1], b_axis[b_axis.len() - 1]),
+        ],
+        line: false,
+    });
+    chart(
+        "docs/stability_status.svg",
+        "failures on the (mu~, b*) plane (markers offset in b* by method)",
+        ("friction mu~ = mu / delta", Scale::Log),
+        ("b*", Scale::Linear),
+        &series,
+        None,
+    )?;
+
+    for i in 0..METHODS.len() {
+        text_map(&plane, &b_axis, &mu_axis, i);
+    }
+    summary(&plane, &engineering);
+    println!(
+        "wrote docs/stability_map.csv and docs/stability_*.svg in {:.1} s",
+        t0.elapsed().as_secs_f64()
+    );
+    Ok(())
+}
+
+/// Failure counts per method and status, with the range of (b*, mu~) where they happen, and
+/// how often the method's estimate misses its true error.
+fn summary(plane: &[Solved], engineering: &[Solved]) {
+    for (what, set) in [("plane", plane), ("engineering extremes", engineering)] {
+        println!("== {what}: {} scenes", set.len());
+        for (i, &m) in METHODS.iter().enumerate() {
+            let mut by_status: BTreeMap<&str, Vec<&Scene>> = BTreeMap::new();
+            for s in set {
+                if let Outcome::Failed { status, .. } = s.runs[i].outcome {
+                    by_status.entry(status).or_default().push(&s.scene);
+                }
+            }
+            let checks: Vec<bool> = set.iter().filter_map(|s| s.underestimates(i)).collect();
+            let worst = set
+                .iter()
+                .filter_map(|s| s.true_error(i))
+                .fold(0.0, f64::max);
+            println!(
+                "{:8} {:.1} s; estimate below true error (beyond the reference's accuracy) in \
+                 {} of {} compared; largest true error {worst:.2e}",
+                method_name(m),
+                set.iter().map(|s| s.runs[i].seconds).sum::<f64>(),
+                checks.iter().filter(|&&u| u).count(),
+                checks.len(),
+            );
+            for (status, scenes) in by_status {
+                let range = |f: fn(&Scene) -> f64| {
+                    scenes
+                        .iter()
+                        .map(|s| f(s))
+                        .fold((f64::INFINITY, 0.0), |(a, b), v| (a.min(v), f64::max(b, v)))
+                };
+                let (b0, b1) = range(Scene::b_star);
+                let (m0, m1) = range(Scene::mu_tilde);
+                let mut families: Vec<&str> = scenes.iter().map(|s| s.family).collect();
+                families.dedup();
+                println!(
+                    "    {status}: {} scenes, b* in [{b0:.3e}, {b1:.3}], mu~ in [{m0:.2e}, \
+                     {m1:.2e}] ({})",
+                    scenes.len(),
+                    families.join(", ")
+                );
+            }
+        }
+        let tight_fail = set
+            .iter()
+            .filter(|s| {
+                matches!(
+                    s.tight,
+                    Some(Run {
+                        outcome: Outcome::Failed { .. },
+                        ..
+                    })
+                )
+            })
+            .count();
+        println!("COUPLED_TIGHT (1e-12) failed in {tight_fail} of the scenes COUPLED solved");
+    }
+}
+
+/// The plane as text for method i: one line per b*, one character per mu~: `.` solved with
+/// the estimate covering the true error, `u` solved but the estimate misses it, `i` solved
+/// with an infinite estimate (no bound known), `o` solved without a reference, or the first
+/// letter of the failure status.
+fn text_map(plane: &[Solved], b_axis: &[f64], mu_axis: &[f64], i: usize) {
+    println!(
+        "{} over mu~ = {:.0e} .. {:.0e} (columns) and b* (rows):",
+        method_name(METHODS[i]),
+        mu_axis[0],
+        mu_axis[mu_axis.len() - 1]
+    );
+    for (row, b) in plane.chunks(mu_axis.len()).zip(b_axis).rev() {
+        let line: String = row
+            .iter()
+            .map(|s| match (&s.runs[i].outcome, s.underestimates(i)) {
+                (Outcome::Failed { status, .. }, _) => status.chars().next().unwrap_or('?'),
+                (Outcome::Solved { estimate, .. }, _) if estimate.is_infinite() => 'i',
+                (Outcome::Solved { .. }, Some(true)) => 'u',
+                (Outcome::Solved { .. }, Some(false)) => '.',
+                (Outcome::Solved { .. }, None) => 'o',
+            })
+            .collect();
+        println!("  b* = {b:.3}  {line}");
+    }
+}
