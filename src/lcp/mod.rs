@@ -134,10 +134,21 @@ fn solve_level(k: &Coupling, grid: Grid, start: Option<&LcpSolution>) -> Result<
         controls(WARM_SMOOTHING),
     )?;
     let e = stick_edge::locate(grid, &root.a, &root.b);
+    let p: Vec<f64> = root.b.iter().zip(&root.z).map(|(b, z)| b + z).collect();
+    // The LCP constrains slip and friction reserve, not the sign of p: a solution with
+    // tension under the punch is another (non-physical) branch, not an answer.
+    if let Some(i) = p.iter().position(|&v| v < 0.0) {
+        return Err(Error::NoConvergence(format!(
+            "LCP reached a non-physical branch on {n} panels (pressure {:.3e} < 0 at x = {:.4}); \
+             use METHOD_COUPLED",
+            p[i],
+            grid.mid(i)
+        )));
+    }
     Ok(LcpSolution {
         coupling: *k,
         grid,
-        p: root.b.iter().zip(&root.z).map(|(b, z)| b + z).collect(),
+        p,
         q: root.z.iter().map(|z| k.mu * z).collect(),
         slip: root.a.iter().map(|a| k.bq * a).collect(),
         edge: StickEdge {
@@ -169,13 +180,13 @@ impl Ladder {
     }
 
     /// Solves on `n` panels from the current finest solution and sets its error estimate
-    /// E = 1.5 max(|c_n - c_{n/2}|, |c_{n/2} - c_{n/4}| / 2) + h / 4: the error in c is a
+    /// E = 2.5 max(|c_n - c_{n/2}|, |c_{n/2} - c_{n/4}| / 2) + h / 2: the error in c is a
     /// smooth first-order term (Richardson with order 1: |c_n - c_{n/2}|, or the previous
     /// difference halved) plus a sawtooth in the position of c within its cell, measured
-    /// <= 0.12 h wide (see `stick_edge`), hence h / 4. Measured against Goodman (bp = 0) and
-    /// against Richardson limits from n = 800, 1600 (b* = 0.29 .. 0.9, mu = 0.1 .. 1.2):
-    /// |c - c*| <= 0.73 E. When c is not bracketed (c < x_0 or c > x_{n-1}) the half-panel
-    /// h / 2 is the floor.
+    /// <= 0.12 h wide (see `stick_edge`). The factors cover what the stability map measured
+    /// against COUPLED: near full stick, with 1 - c a few h (b* = 0.53, mu~ = 46 .. 464;
+    /// b* = 0.61, mu~ = 10), the error reached 1.4 times the former 1.5 d + h / 4. When c is
+    /// not bracketed (c < x_0 or c > x_{n-1}) the half-panel h / 2 is the floor.
     fn step(&mut self, n: usize) -> Result<()> {
         let mut s = solve_level(&self.coupling, Grid::new(n), self.finest.as_ref())?;
         self.edges.push(s.edge.c);
@@ -188,7 +199,7 @@ impl Ladder {
             let h = s.grid.h;
             let bracketed = s.stick_points > 0 && s.stick_points < n;
             let floor = if bracketed { 0.0 } else { 0.5 * h };
-            s.error = (1.5 * d1.max(0.5 * d2) + 0.25 * h).max(floor);
+            s.error = (2.5 * d1.max(0.5 * d2) + 0.5 * h).max(floor);
         }
         self.finest = Some(s);
         Ok(())
