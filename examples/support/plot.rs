@@ -129,7 +129,7 @@ pub fn chart(
 
 /// A heat map of log10(value) over a grid (x log-spaced, y linear), with band edges at the
 /// given decades drawn as contours (cells whose value crosses a level against a neighbour
-/// are outlined in black).
+/// are outlined in black). NaN values (no data: a failed method or reference) are grey.
 pub fn heatmap(
     path: &str,
     title: &str,
@@ -145,6 +145,7 @@ pub fn heatmap(
     let (lo, hi) = logs
         .iter()
         .flatten()
+        .filter(|v| !v.is_nan())
         .fold((f64::INFINITY, f64::NEG_INFINITY), |(a, b), &v| {
             (a.min(v), b.max(v))
         });
@@ -191,7 +192,13 @@ pub fn heatmap(
         .x_desc(x_desc)
         .y_desc(y_desc)
         .draw()?;
-    let color = |v: f64| ViridisRGB::get_color_normalized(v, lo, hi.max(lo + 1e-9));
+    let color = |v: f64| {
+        if v.is_nan() {
+            RGBColor(200, 200, 200)
+        } else {
+            ViridisRGB::get_color_normalized(v, lo, hi.max(lo + 1e-9))
+        }
+    };
     for (j, row) in logs.iter().enumerate() {
         for (i, &v) in row.iter().enumerate() {
             let ((x0, x1), (y0, y1)) = (cell(i, xs), celly(j));
