@@ -49,7 +49,8 @@ impl Coupling {
 }
 
 /// Edge of the stick zone, carried both ways so that 1 - c keeps full relative accuracy
-/// when c is close to 1 (never form `1.0 - c` when c is near 1).
+/// when c is close to 1 (never form `1.0 - c` when c is near 1). A slip width below the
+/// smallest double (~1e-308; Goodman's at large friction) underflows to 0, and then c = 1.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct StickEdge {
     /// Stick half-width c in [0, 1).
