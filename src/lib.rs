@@ -22,6 +22,7 @@ pub mod error;
 pub mod goodman;
 pub mod material;
 pub mod problem;
+pub mod roots;
 // solver modules:
 pub mod coupled;
 pub mod lcp;

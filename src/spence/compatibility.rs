@@ -14,6 +14,7 @@ use std::f64::consts::PI;
 use super::hypergeometric::hyp2f1;
 use crate::error::{Error, Result};
 use crate::quadrature::ln_gamma;
+use crate::roots::brent;
 
 /// m = c^2 and 1 - m with their logarithms, all to full relative accuracy, from s = ln(m/(1-m)).
 #[derive(Clone, Copy, Debug)]
@@ -106,7 +107,7 @@ impl Compatibility {
                 )));
             }
             if fb.signum() != fa.signum() {
-                let s = brent(&phi, a, fa, b, fb);
+                let s = brent(|s| Ok(phi(s)), (a, fa), (b, fb), 1e-300, 300)?;
                 return Ok((s, self.error_at(s)));
             }
             (a, fa) = (b, fb);
@@ -126,62 +127,4 @@ impl Compatibility {
         let slope = (self.eval(s + ds).0 - self.eval(s - ds).0) / (2.0 * ds);
         (err + f.abs()) / slope.abs() + 2.0 * f64::EPSILON * s.abs()
     }
-}
-
-/// Brent's method for f(a) f(b) < 0, iterated until the bracket is two adjacent numbers
-/// (or f vanishes); returns the end with the smaller |f|.
-fn brent(f: &dyn Fn(f64) -> f64, a: f64, fa: f64, b: f64, fb: f64) -> f64 {
-    let (mut a, mut fa, mut b, mut fb) = (a, fa, b, fb);
-    let (mut c, mut fc) = (a, fa);
-    let mut d = b - a;
-    let mut e = d;
-    for _ in 0..300 {
-        if fb.signum() == fc.signum() {
-            (c, fc) = (a, fa);
-            d = b - a;
-            e = d;
-        }
-        if fc.abs() < fb.abs() {
-            (a, fa) = (b, fb);
-            (b, fb) = (c, fc);
-            (c, fc) = (a, fa);
-        }
-        let tol = 2.0 * f64::EPSILON * b.abs() + 1e-300;
-        let m = 0.5 * (c - b);
-        if m.abs() <= tol || fb == 0.0 {
-            break;
-        }
-        if e.abs() >= tol && fa.abs() > fb.abs() {
-            let s = fb / fa;
-            let (mut p, mut q);
-            if a == c {
-                p = 2.0 * m * s;
-                q = 1.0 - s;
-            } else {
-                let qa = fa / fc;
-                let r = fb / fc;
-                p = s * (2.0 * m * qa * (qa - r) - (b - a) * (r - 1.0));
-                q = (qa - 1.0) * (r - 1.0) * (s - 1.0);
-            }
-            if p > 0.0 {
-                q = -q;
-            } else {
-                p = -p;
-            }
-            if 2.0 * p < (3.0 * m * q - (tol * q).abs()).min((e * q).abs()) {
-                e = d;
-                d = p / q;
-            } else {
-                d = m;
-                e = m;
-            }
-        } else {
-            d = m;
-            e = m;
-        }
-        (a, fa) = (b, fb);
-        b += if d.abs() > tol { d } else { tol.copysign(m) };
-        fb = f(b);
-    }
-    b
 }

@@ -1,0 +1,107 @@
+//! Brent's bracketing root finder (R. P. Brent, Algorithms for Minimization without
+//! Derivatives, 1973, ch. 4: inverse quadratic interpolation, secant and bisection steps),
+//! shared by the solvers.
+
+use crate::error::{Error, Result};
+
+/// A root of f in the bracket [a, b], where fa = f(a) and fb = f(b) have opposite signs,
+/// located to within `xtol` + 2 eps |x|. f may fail; its error is passed on. Returns the
+/// bracket end with the smaller |f| once the bracket is that narrow (or f vanishes there);
+/// `Error::NoConvergence` after `max_iter` steps.
+pub fn brent(
+    mut f: impl FnMut(f64) -> Result<f64>,
+    (mut a, mut fa): (f64, f64),
+    (mut b, mut fb): (f64, f64),
+    xtol: f64,
+    max_iter: usize,
+) -> Result<f64> {
+    let (mut c, mut fc) = (a, fa);
+    let (mut d, mut e) = (b - a, b - a);
+    for _ in 0..max_iter {
+        if fb.signum() == fc.signum() {
+            (c, fc) = (a, fa);
+            d = b - a;
+            e = d;
+        }
+        if fc.abs() < fb.abs() {
+            (a, fa, b, fb, c, fc) = (b, fb, c, fc, b, fb);
+        }
+        let tol = xtol + 2.0 * f64::EPSILON * b.abs();
+        let m = 0.5 * (c - b);
+        if m.abs() <= tol || fb == 0.0 {
+            return Ok(b);
+        }
+        if e.abs() >= tol && fa.abs() > fb.abs() {
+            let s = fb / fa;
+            let (mut p, mut q) = if a == c {
+                (2.0 * m * s, 1.0 - s)
+            } else {
+                let (qa, r) = (fa / fc, fb / fc);
+                (
+                    s * (2.0 * m * qa * (qa - r) - (b - a) * (r - 1.0)),
+                    (qa - 1.0) * (r - 1.0) * (s - 1.0),
+                )
+            };
+            if p > 0.0 {
+                q = -q;
+            }
+            p = p.abs();
+            if 2.0 * p < (3.0 * m * q - (tol * q).abs()).min((e * q).abs()) {
+                e = d;
+                d = p / q;
+            } else {
+                d = m;
+                e = m;
+            }
+        } else {
+            d = m;
+            e = m;
+        }
+        (a, fa) = (b, fb);
+        b += if d.abs() > tol { d } else { tol.copysign(m) };
+        fb = f(b)?;
+    }
+    Err(Error::NoConvergence(format!(
+        "Brent's method did not bracket the root within {max_iter} steps"
+    )))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn finds_roots_to_the_requested_width() {
+        // cos x = x (the Dottie number), a cubic with a root at 2, and a steep exponential.
+        let dottie = 0.739_085_133_215_160_6;
+        let x = brent(
+            |x| Ok(x.cos() - x),
+            (0.0, 1.0),
+            (1.0, 1f64.cos() - 1.0),
+            0.0,
+            100,
+        )
+        .unwrap();
+        assert!((x - dottie).abs() <= 4.0 * f64::EPSILON);
+        let f = |x: f64| Ok((x - 2.0) * (x * x + 1.0));
+        let x = brent(f, (0.0, -2.0), (5.0, 78.0), 1e-10, 100).unwrap();
+        assert!((x - 2.0).abs() <= 2e-10);
+        let g = |x: f64| (50.0 * x).exp() - 2.0;
+        let x = brent(|x| Ok(g(x)), (-1.0, g(-1.0)), (1.0, g(1.0)), 0.0, 200).unwrap();
+        assert!((x - 2f64.ln() / 50.0).abs() <= 1e-16);
+    }
+
+    #[test]
+    fn passes_on_the_function_error_and_stops_at_the_iteration_cap() {
+        let failing = |_x: f64| Err(Error::Internal("boom".into()));
+        assert!(matches!(
+            brent(failing, (0.0, -1.0), (1.0, 1.0), 0.0, 10),
+            Err(Error::Internal(_))
+        ));
+        let slow = |x: f64| Ok(x);
+        assert!(matches!(
+            brent(slow, (-1.0, -1.0), (1.0, 1.0), 0.0, 1),
+            Err(Error::NoConvergence(_))
+        ));
+    }
+}
