@@ -115,8 +115,10 @@ pub unsafe extern "C" fn orthoslip_solution_method(
 }
 
 /// Writes the solution's estimate of |c - c_exact|, c_exact being the stick half-width of
-/// the exact coupled problem: discretisation error for COUPLED and LCP, model error for the
-/// approximations GOODMAN and SPENCE.
+/// the exact coupled problem: discretisation error for COUPLED and LCP, certified model error
+/// for the approximations GOODMAN and SPENCE (from a table computed offline by COUPLED),
+/// +INFINITY where no model-error bound is certified (far outside the tabulated range of
+/// b* = 0.05 .. 0.95, or where the exact solver fails). Never NaN.
 ///
 /// Returns ORTHOSLIP_OK or ORTHOSLIP_ERROR_NULL_POINTER (nothing written).
 ///
