@@ -1,11 +1,16 @@
-//! Times METHOD_COUPLED on one core: solve and traction evaluation, isotropic plane-strain
-//! steel and the carbon/epoxy ply of THEORY.md section 2.
+//! Times METHOD_COUPLED on one core: solve (tol = 1e-10 and 1e-6) and traction evaluation,
+//! isotropic plane-strain steel and the carbon/epoxy ply of THEORY.md section 2.
+//! Optional argument: the number of repetitions per case (default 20).
 use orthoslip::coupled::solve;
 use orthoslip::problem::{Coupling, Profile};
 use std::f64::consts::PI;
 use std::time::Instant;
 
 fn main() {
+    let reps: usize = std::env::args()
+        .nth(1)
+        .and_then(|a| a.parse().ok())
+        .unwrap_or(20);
     let steel = 2.0 / 7.0;
     let (e11, e22, g12, nu12): (f64, f64, f64, f64) = (181e9, 10.3e9, 7.17e9, 0.28);
     let e = (e11 * e22).sqrt();
@@ -16,37 +21,37 @@ fn main() {
     let b = (2.0 * (1.0 + kappa)).sqrt() / (PI * delta * e);
     let c = delta * (2.0 * (1.0 + kappa)).sqrt() / (PI * e);
     let (cbp, cbq) = (a / (PI * c), a / (PI * b));
-    println!("carbon/epoxy: bp = {cbp:.15}, bq = {cbq:.15}");
-    for (name, bp, bq) in [("steel", steel, steel), ("carbon", cbp, cbq)] {
-        for mu in [0.1, 0.3, 1.0] {
-            let k = Coupling { bp, bq, mu };
-            let reps = 3;
-            let t = Instant::now();
-            let mut s = None;
-            for _ in 0..reps {
-                s = Some(solve(&k, 1e-10).expect("solve"));
+    println!("carbon/epoxy: bp = {cbp:.15}, bq = {cbq:.15}; {reps} solves per case");
+    for tol in [1e-10, 1e-6] {
+        for (name, bp, bq) in [("steel", steel, steel), ("carbon", cbp, cbq)] {
+            for mu in [0.1, 0.3, 1.0] {
+                let k = Coupling { bp, bq, mu };
+                let mut s = solve(&k, tol).expect("solve");
+                let t = Instant::now();
+                for _ in 0..reps {
+                    s = solve(&k, tol).expect("solve");
+                }
+                let per_solve = t.elapsed().as_secs_f64() / reps as f64;
+                let npts = 200_000;
+                let t = Instant::now();
+                let mut acc = 0.0;
+                for i in 0..npts {
+                    let x = -0.999 + 1.998 * (i as f64 + 0.5) / npts as f64;
+                    let (p, q) = s.tractions(x);
+                    acc += p + q;
+                }
+                let per_point = t.elapsed().as_secs_f64() / npts as f64;
+                println!(
+                    "tol {tol:.0e} {name:6} mu {mu:3}: c = {:.15e}, 1 - c = {:.12e}, est {:.1e}, order {:2}, {:3} unknowns, {:8.3} ms/solve, {:3.0} ns/point (checksum {acc:.3})",
+                    s.edge().c,
+                    s.edge().one_minus_c,
+                    s.numerical_error(),
+                    s.order(),
+                    s.unknowns(),
+                    per_solve * 1e3,
+                    per_point * 1e9
+                );
             }
-            let per_solve = t.elapsed().as_secs_f64() / reps as f64;
-            let s = s.unwrap();
-            let npts = 200_000;
-            let t = Instant::now();
-            let mut acc = 0.0;
-            for i in 0..npts {
-                let x = -0.999 + 1.998 * (i as f64 + 0.5) / npts as f64;
-                let (p, q) = s.tractions(x);
-                acc += p + q;
-            }
-            let per_point = t.elapsed().as_secs_f64() / npts as f64;
-            println!(
-                "{name:6} mu {mu:3}: c = {:.15e}, 1 - c = {:.12e}, est {:.1e}, order {}, {} unknowns, {:.2} ms/solve, {:.0} ns/point (checksum {acc:.3})",
-                s.edge().c,
-                s.edge().one_minus_c,
-                s.numerical_error(),
-                s.order(),
-                s.unknowns(),
-                per_solve * 1e3,
-                per_point * 1e9
-            );
         }
     }
 }

@@ -4,16 +4,121 @@
 //! (COUPLED.md "Local exponents").
 //!
 //! Near the panel (|y| <= 1.1) C_0 is evaluated in closed form and the rest follow from the
-//! exact recurrence (k+1) C_{k+1} + k C_{k-1} = (2k+1) (y C_k - M_k), M_k = int w P_k
-//! (forward recurrence: absolute error <= eps rho(y)^k <= 1e-11 for |y| <= 1.1, k < 26); farther away a
-//! Gauss-Jacobi rule for w, sized to the distance, is exact to rounding.
+//! exact recurrence (k+1) C_{k+1} + k C_{k-1} = (2k+1) (y C_k - M_k), M_k = int w P_k in
+//! closed form (forward recurrence: absolute error <= eps rho(y)^k <= 1e-11 for |y| <= 1.1,
+//! k < 26); farther away a Gauss-Jacobi rule for w, sized to the distance and the degree, is
+//! exact to rounding.
 
 use crate::quadrature::gauss_jacobi;
 use std::f64::consts::PI;
 
-/// Far-field rules: (|y| above which it is used, nodes), Bernstein parameter
-/// rho(y) = |y| + sqrt(y^2 - 1) and rho^(-2 nodes) < 1e-17 in each range.
-const FAR_RULES: [(f64, usize); 3] = [(4.0, 16), (1.5, 32), (1.1, 48)];
+/// Far-field bands: the |y| above which each rule is used. A rule of m nodes integrates
+/// P_k(t) / (y - t) with error ~ rho^(k - 2m), rho = |y| + sqrt(y^2 - 1) at the band's lower
+/// end ([`far_nodes`]), so the wider bands far away need few nodes.
+const FAR_BANDS: [f64; 6] = [150.0, 40.0, 12.0, 4.0, 1.5, 1.1];
+
+/// Nodes of the far-field rule for |y| > y_min and Legendre degrees below `degrees`:
+/// rho^(degrees - 1 - 2m) <= 1e-17.
+fn far_nodes(y_min: f64, degrees: usize) -> usize {
+    let rho = y_min + (y_min * y_min - 1.0).sqrt();
+    ((degrees as f64 - 1.0 + 17.0 / rho.log10()) / 2.0).ceil() as usize
+}
+
+/// Gauss-Jacobi rule with m nodes for the weight (1 - t)^e, e in (-1, 1): Newton's method on
+/// the Jacobi recurrence (A&S 22.7.1) from the asymptotic angles
+/// theta_k = (k - 1/4 + e/2) pi / (m + (e + 1)/2), all nodes at once; Christoffel weights. Accepted when every node converged and the nodes are
+/// strictly ordered (then they are the m zeros of P_m); otherwise the Golub-Welsch rule of
+/// [`gauss_jacobi`] (several times slower).
+fn end_rule(m: usize, e: f64) -> (Vec<f64>, Vec<f64>) {
+    // the recurrence P_n = (b t + c) P_{n-1} - d P_{n-2} (beta = 0), coefficients per n
+    let coefs: Vec<(f64, f64, f64)> = (2..=m)
+        .map(|n| {
+            let nf = n as f64;
+            let s = 2.0 * nf + e;
+            let a = 2.0 * nf * (nf + e) * (s - 2.0);
+            (
+                (s - 1.0) * s * (s - 2.0) / a,
+                (s - 1.0) * e * e / a,
+                2.0 * (nf + e - 1.0) * (nf - 1.0) * s / a,
+            )
+        })
+        .collect();
+    // P_m and P_m' at all nodes at once (the nodes' recurrences interleave)
+    let eval = |t: &[f64], p: &mut [f64], dp: &mut [f64]| {
+        let k = t.len();
+        let (mut p0, mut d0) = (vec![1.0; k], vec![0.0; k]);
+        for i in 0..k {
+            p[i] = 0.5 * ((e + 2.0) * t[i] + e);
+            dp[i] = 0.5 * (e + 2.0);
+        }
+        for &(b, c, d) in &coefs {
+            for i in 0..k {
+                let bt = b * t[i] + c;
+                let p2 = bt * p[i] - d * p0[i];
+                let d2 = bt * dp[i] + b * p[i] - d * d0[i];
+                (p0[i], p[i], d0[i], dp[i]) = (p[i], p2, dp[i], d2);
+            }
+        }
+    };
+    let scale = PI / (m as f64 + 0.5 * (e + 1.0));
+    // descending nodes from the asymptotic angles
+    let mut t: Vec<f64> = (1..=m)
+        .map(|k| ((k as f64 - 0.25 + 0.5 * e) * scale).cos())
+        .collect();
+    let (mut p, mut dp) = (vec![0.0; m], vec![0.0; m]);
+    let mut converged = false;
+    for _ in 0..12 {
+        eval(&t, &mut p, &mut dp);
+        let mut largest: f64 = 0.0;
+        for i in 0..m {
+            let step = p[i] / dp[i];
+            t[i] -= step;
+            largest = largest.max(step.abs());
+        }
+        if largest <= 4.0 * f64::EPSILON {
+            converged = true;
+            break;
+        }
+    }
+    let ordered = t.windows(2).all(|w| w[1] < w[0]) && t.iter().all(|v| v.abs() < 1.0);
+    if m == 0 || !(converged && ordered) {
+        return gauss_jacobi(m, e, 0.0);
+    }
+    // Christoffel numbers 1 / sum_{k<m} P_k^2 / h_k, h_k = 2^(e+1) / (2k + e + 1): full
+    // relative accuracy also next to the ends
+    let weights = t
+        .iter()
+        .rev()
+        .map(|&x| {
+            let (mut p0, mut p1) = (1.0, 0.5 * ((e + 2.0) * x + e));
+            let mut sum = (e + 1.0) + if m > 1 { (e + 3.0) * p1 * p1 } else { 0.0 };
+            for (n, &(b, c, d)) in coefs.iter().enumerate().take(m.saturating_sub(2)) {
+                let p2 = (b * x + c) * p1 - d * p0;
+                sum += (2.0 * n as f64 + e + 5.0) * p2 * p2;
+                (p0, p1) = (p1, p2);
+            }
+            (e + 1.0).exp2() / sum
+        })
+        .collect();
+    t.reverse();
+    (t, weights)
+}
+
+/// The rule with m nodes for `weight` (ascending nodes): the end rule, mirrored for a left
+/// end.
+fn weight_rule(weight: Weight, m: usize) -> (Vec<f64>, Vec<f64>) {
+    match weight {
+        Weight::One => end_rule(m, 0.0),
+        Weight::Right(e) => end_rule(m, e),
+        Weight::Left(e) => {
+            let (nodes, weights) = end_rule(m, e);
+            (
+                nodes.iter().rev().map(|t| -t).collect(),
+                weights.into_iter().rev().collect(),
+            )
+        }
+    }
+}
 
 /// Endpoint weight of a panel basis function on [-1, 1].
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -43,6 +148,27 @@ impl Weight {
             Weight::Right(e) => (1.0 - t).powf(e),
             Weight::Left(e) => (1.0 + t).powf(e),
         }
+    }
+
+    /// M_k = int_{-1}^{1} w P_k for k < n: for (1 - t)^e, M_0 = 2^(e+1) / (e + 1) and
+    /// M_k = M_{k-1} (k - 1 - e) / (k + 1 + e) (from int (1-t)^e P_k = 2^(e+1) Gamma(e+1)^2 /
+    /// (Gamma(e+k+2) Gamma(e+1-k)), Gradshteyn-Ryzhik 7.127); (1 + t)^e by P_k(-t) = (-1)^k P_k(t).
+    fn moments(self, n: usize) -> Vec<f64> {
+        let (e, sign) = match self {
+            Weight::One => (0.0, 1.0),
+            Weight::Right(e) => (e, 1.0),
+            Weight::Left(e) => (e, -1.0),
+        };
+        let mut m = Vec::with_capacity(n);
+        let mut v = (e + 1.0).exp2() / (e + 1.0);
+        for k in 0..n {
+            if k > 0 {
+                let kf = k as f64;
+                v *= sign * (kf - 1.0 - e) / (kf + 1.0 + e);
+            }
+            m.push(v);
+        }
+        m
     }
 
     /// PV int_{-1}^{1} w(t) / (y - t) dt for |y| <= ~1.3, y != +-1.
@@ -144,7 +270,7 @@ pub fn legendre(t: f64, out: &mut [f64]) {
     }
 }
 
-/// Everything needed to transform one weight's Legendre family: its far-field Gauss rule
+/// Everything needed to transform one weight's Legendre family: its far-field Gauss rules
 /// (with the Legendre values at the nodes) and the moments M_k.
 #[derive(Clone, Debug)]
 pub struct WeightedFamily {
@@ -152,7 +278,7 @@ pub struct WeightedFamily {
     pub weight: Weight,
     /// Number of Legendre degrees handled (0..degrees).
     pub degrees: usize,
-    /// Per far rule: nodes and Gauss weights times P_k(node), row-major [node][k].
+    /// Per far band: nodes and Gauss weights times P_k(node), row-major [node][k].
     far: Vec<(Vec<f64>, Vec<f64>)>,
     moments: Vec<f64>,
 }
@@ -160,11 +286,11 @@ pub struct WeightedFamily {
 impl WeightedFamily {
     /// Family for `weight` and Legendre degrees below `degrees`.
     pub fn new(weight: Weight, degrees: usize) -> Self {
-        let (a, b) = weight.exponents();
-        let far: Vec<(Vec<f64>, Vec<f64>)> = FAR_RULES
+        let far: Vec<(Vec<f64>, Vec<f64>)> = FAR_BANDS
             .iter()
-            .map(|&(_, count)| {
-                let (nodes, weights) = gauss_jacobi(count, a, b);
+            .map(|&y_min| {
+                let count = far_nodes(y_min, degrees);
+                let (nodes, weights) = weight_rule(weight, count);
                 let mut wp = vec![0.0; count * degrees];
                 for (j, (&t, &w)) in nodes.iter().zip(&weights).enumerate() {
                     let row = &mut wp[j * degrees..(j + 1) * degrees];
@@ -174,19 +300,11 @@ impl WeightedFamily {
                 (nodes, wp)
             })
             .collect();
-        // moments from the largest rule (exact for degrees < 2 * 48)
-        let (nodes, wp) = &far[far.len() - 1];
-        let mut moments = vec![0.0; degrees];
-        for j in 0..nodes.len() {
-            for (m, v) in moments.iter_mut().zip(&wp[j * degrees..(j + 1) * degrees]) {
-                *m += v;
-            }
-        }
         Self {
             weight,
             degrees,
             far,
-            moments,
+            moments: weight.moments(degrees),
         }
     }
 
@@ -199,7 +317,7 @@ impl WeightedFamily {
     pub fn cauchy(&self, y: f64, out: &mut [f64]) {
         let n = out.len().min(self.degrees);
         let stride = self.degrees;
-        if let Some(r) = FAR_RULES.iter().position(|&(lim, _)| y.abs() > lim) {
+        if let Some(r) = FAR_BANDS.iter().position(|&lim| y.abs() > lim) {
             let (nodes, wp) = &self.far[r];
             out[..n].fill(0.0);
             for (j, &t) in nodes.iter().enumerate() {
@@ -315,6 +433,63 @@ mod tests {
                     let scale = 1.0 + r.abs();
                     assert!(
                         (out[k] - r).abs() < 2e-12 * scale,
+                        "{w:?} y {y} k {k}: {} vs {r}",
+                        out[k]
+                    );
+                }
+            }
+        }
+    }
+
+    /// The Newton-built end rules integrate w P_l exactly (l < 2m, to 3e-13 of the mass or twice
+    /// the Golub-Welsch rule's error) against the closed-form moments, and their nodes agree
+    /// with the Golub-Welsch rules of the quadrature module.
+    #[test]
+    fn end_rule_is_gaussian() {
+        for e in [-0.9, -0.5, -0.2, 0.0, 0.37, 0.8] {
+            for m in [1usize, 2, 5, 16, 33, 56] {
+                let (x, w) = end_rule(m, e);
+                let (xr, wr) = gauss_jacobi(m, e, 0.0);
+                let exact = Weight::Right(e).moments(2 * m);
+                let mut leg = vec![0.0; 2 * m];
+                let (mut sum, mut sum_r) = (vec![0.0; 2 * m], vec![0.0; 2 * m]);
+                for i in 0..m {
+                    legendre(x[i], &mut leg);
+                    sum.iter_mut().zip(&leg).for_each(|(s, l)| *s += w[i] * l);
+                    legendre(xr[i], &mut leg);
+                    sum_r
+                        .iter_mut()
+                        .zip(&leg)
+                        .for_each(|(s, l)| *s += wr[i] * l);
+                    assert!((x[i] - xr[i]).abs() < 1e-14, "e {e} m {m} node {i}");
+                }
+                let worst = |s: &[f64]| {
+                    s.iter()
+                        .zip(&exact)
+                        .map(|(a, b)| (a - b).abs())
+                        .fold(0.0, f64::max)
+                };
+                let (err, err_gw) = (worst(&sum), worst(&sum_r));
+                assert!(
+                    err <= 2.0 * err_gw + 3e-13 * exact[0],
+                    "e {e} m {m}: {err:.1e} (Golub-Welsch {err_gw:.1e})"
+                );
+            }
+        }
+    }
+
+    /// Far-field bands at the highest order used (degrees < 26), both signs of y.
+    #[test]
+    fn far_field_at_high_degree() {
+        for w in [Weight::Right(-0.45), Weight::Left(0.55), Weight::One] {
+            let fam = WeightedFamily::new(w, 26);
+            let mut out = vec![0.0; 26];
+            for y in [1.12, -1.45, 1.6, 4.5, -13.0, 45.0, 200.0] {
+                fam.cauchy(y, &mut out);
+                for k in [0usize, 7, 15, 25] {
+                    let r = reference(w, k, y);
+                    assert!(
+                        (out[k] - r).abs() < 2e-12 * (1.0 + r.abs()),
                         "{w:?} y {y} k {k}: {} vs {r}",
                         out[k]
                     );

@@ -10,19 +10,24 @@
 //! - c is the root of kappa(c), the coefficient of q's (c - x)^(g-1) mode (bounded q at c is
 //!   the compatibility condition), found in t = ln(c / (1 - c)) so that c ~ 1e-20 and
 //!   1 - c ~ 1e-12 are both carried to full relative accuracy;
-//! - the order is raised until two successive orders agree on c within the tolerance.
+//! - the order is raised (4, then 6, 8, 11, 13, 16, ...) until two successive orders agree on c within
+//!   the tolerance (their difference plus both roots' location uncertainties) and on the
+//!   tractions within 100 tol (at most 1e-9). Each order starts from the
+//!   previous order's root and slope: one secant (Newton) step, usually two solves.
 //!
 //! Which root: kappa < 0 for small c (checked at a c far below Goodman's estimate, walking
-//! down until it is; never above c = 1/2), then c is increased in steps of 1 in t until kappa
-//! (at the cheap order 4) changes sign: the
-//! first sign change met from c = 0 brackets the physical root (the one continuous in mu from
-//! small friction), which Brent's method then refines. The solution is checked for
-//! |q| <= mu p on the stick zone before it is returned.
+//! down until it is; never above c = 1/2), then c is increased in t (steps of 1 to 3, a
+//! little beyond the linearly extrapolated zero) until kappa (at the cheap order 4) changes
+//! sign: the first sign change met from c = 0 brackets the physical root (the one
+//! continuous in mu from small friction), which Brent's method then refines at order 4. The
+//! solution is checked for |q| <= mu p on the stick zone before it is returned.
 //!
 //! Range: 2e-35 < c and 1 - c > 4e-18 (outside it NoConvergence says so); the number of
-//! panels grows like log(1 / min(c, 1 - c)). Cost (measured, one core): 15-80 ms per solve
-//! to tol = 1e-10 for c in [1e-5, 1 - 2e-3] (100-400 unknowns, a few least-squares solves
-//! per order); tractions afterwards 40-60 ns per point.
+//! panels grows like log(1 / min(c, 1 - c)). Cost (measured, one core, shared machine):
+//! 6-45 ms per solve to tol = 1e-10 and 2.5-14 ms to 1e-6 for c in [5e-5, 1 - 2e-3]
+//! (6-9 cheap order-4 solves, then about two column-pivoted least-squares solves per order,
+//! 100-350 unknowns at the last); the first solve for a new edge exponent g also builds the
+//! transform families (0.2-0.4 ms per order, then shared); tractions 30-60 ns per point.
 
 pub mod cauchy;
 pub mod mesh;
@@ -37,15 +42,35 @@ use mesh::{Layout, Pt};
 use std::f64::consts::PI;
 use system::{Constants, Discrete, Families, solve_fixed};
 
-/// Step in t = ln(c / (1 - c)) of the scan for the first root (the roots near full stick
-/// repeat every pi / eps >= 12 in ln(1 - c) for b* < 0.99).
+/// Smallest and largest step in t = ln(c / (1 - c)) of the scan for the first root (the
+/// roots near full stick repeat every pi / eps >= 12 in ln(1 - c) for b* < 0.99, so no step
+/// holds two of them); in between, the step goes a little beyond the linearly predicted zero.
 const SCAN_STEP: f64 = 1.0;
+const SCAN_MAX_STEP: f64 = 3.0;
 
 /// Order of the scan for the first sign change of kappa (only its sign is used).
 const SCAN_ORDER: usize = 4;
 
-/// Polynomial orders tried in turn (per panel).
-const ORDERS: [usize; 5] = [6, 12, 16, 21, 26];
+/// Two successive orders must also agree on the tractions to TRACTION_RATIO times the
+/// tolerance (relative, [`traction_gap`]): near full stick a tolerance on c alone is met at
+/// orders too low for the tractions.
+const TRACTION_RATIO: f64 = 100.0;
+
+/// The traction agreement asked for at most (below it, the least-squares rounding noise
+/// of the higher orders would decide).
+const TRACTION_FLOOR: f64 = 1e-9;
+
+/// Tolerances below which the finer oversampling is used (kappa's noise at the default one
+/// is 1e-12 .. 1e-13 in c at orders 10-26).
+const FINE_BELOW: f64 = 1e-11;
+
+/// Accuracy in t of the first root at the scan order (a start for the higher orders).
+const SCAN_XTOL: f64 = 1e-4;
+
+/// Polynomial orders tried in turn (per panel) after the scan order: steps of 2 or 3, so
+/// that the order whose error first falls below the tolerance is soon confirmed by the next
+/// (the error falls by 10-100 per step of 2, THEORY.md section 5 / tests.rs).
+const ORDERS: [usize; 8] = [6, 8, 11, 13, 16, 19, 22, 26];
 
 /// The coupled solution: stick edge, error estimate and the discretised tractions.
 #[derive(Clone, Debug)]
@@ -126,13 +151,30 @@ struct Level<'a> {
     fams: &'a Families,
     /// Fixed panel layout while refining a bracket (None: each c its own layout).
     layout: Option<Layout>,
-    /// The last two evaluations (t, kappa), for the slope at the root.
-    hist: [(f64, f64); 2],
+    /// The evaluations (t, kappa), for the slope at the root.
+    evals: Vec<(f64, f64)>,
     /// Accuracy wanted in t (a small fraction of the order's own error in c).
     xtol: f64,
+    /// The discretisations of the last two evaluations (t, solution), newest last.
+    solved: [Option<(f64, Discrete)>; 2],
+    /// Collocation points per unknown.
+    oversample: f64,
 }
 
-impl Level<'_> {
+impl<'a> Level<'a> {
+    fn new(k: Constants, n: usize, fams: &'a Families, xtol: f64, oversample: f64) -> Self {
+        Level {
+            k,
+            n,
+            fams,
+            layout: None,
+            evals: Vec::new(),
+            xtol,
+            solved: [None, None],
+            oversample,
+        }
+    }
+
     fn kappa(&mut self, t: f64) -> Result<f64> {
         let (c, w) = edge_of(t);
         let own;
@@ -143,12 +185,30 @@ impl Level<'_> {
                 &own
             }
         };
-        let kappa = solve_fixed(self.k, c, w, self.n, self.fams, layout)?.kappa;
-        self.hist = [self.hist[1], (t, kappa)];
+        let d = solve_fixed(self.k, c, w, self.n, self.fams, layout, self.oversample)?;
+        let kappa = d.kappa;
+        self.evals.push((t, kappa));
+        self.solved = [self.solved[1].take(), Some((t, d))];
         if kappa.is_finite() {
             Ok(kappa)
         } else {
             Err(Error::NoConvergence(format!("kappa not finite at c = {c}")))
+        }
+    }
+
+    /// The discretisation at t: one of the last two evaluations if it was made there,
+    /// else a new solve.
+    fn discrete_at(&mut self, t: f64) -> Result<Discrete> {
+        let i = self
+            .solved
+            .iter()
+            .position(|s| s.as_ref().is_some_and(|(ts, _)| *ts == t));
+        match i.and_then(|i| self.solved[i].take()) {
+            Some((_, d)) => Ok(d),
+            None => {
+                self.kappa(t)?;
+                self.discrete_at(t)
+            }
         }
     }
 
@@ -157,7 +217,6 @@ impl Level<'_> {
         let (c, w) = edge_of(t);
         self.layout = Some(Layout::for_edge(c, w));
     }
-
     /// Brent's method on kappa(t) in [a, b] with kappa(a) < 0 < kappa(b).
     fn brent(&mut self, mut a: f64, mut b: f64, mut fa: f64, mut fb: f64) -> Result<f64> {
         let xtol = self.xtol;
@@ -229,15 +288,19 @@ impl Level<'_> {
                 ));
             }
         }
+        let mut f_lo = self.evals[self.evals.len() - 1].1;
+        let mut step = SCAN_STEP;
         loop {
-            let hi = lo + SCAN_STEP;
+            let hi = lo + step;
             let f_hi = self.kappa(hi)?;
             if f_hi >= 0.0 {
-                // the scan order's sign may be off within its error of the root: widen once
+                // refine around the interpolated zero with its layout fixed: first a narrow
+                // bracket, then (the scan order's sign may be off within its error of the
+                // root, or kappa far from linear) the scan's bracket widened
                 self.n = order;
-                self.fix_layout(0.5 * (lo + hi));
-                for widen in [0.0, 0.5] {
-                    let (a, b) = (lo - widen, hi + widen);
+                let t_s = lo + step * f_lo / (f_lo - f_hi);
+                for (a, b) in [(t_s - 0.25, t_s + 0.25), (lo - 0.5, hi + 0.5)] {
+                    self.fix_layout(0.5 * (a + b));
                     let (f_a, f_b) = (self.kappa(a)?, self.kappa(b)?);
                     if f_a < 0.0 && f_b >= 0.0 {
                         return self.brent(a, b, f_a, f_b);
@@ -247,6 +310,12 @@ impl Level<'_> {
                     "kappa changes sign with the panel layout or order near t = {lo}"
                 )));
             }
+            // next step: a little beyond the linearly predicted zero, within the bounds
+            step = (1.2 * f_hi * step / (f_lo - f_hi)).clamp(SCAN_STEP, SCAN_MAX_STEP);
+            if !step.is_finite() {
+                step = SCAN_STEP;
+            }
+            f_lo = f_hi;
             lo = hi;
             if lo > 40.0 {
                 return Err(Error::NoConvergence(
@@ -258,42 +327,69 @@ impl Level<'_> {
         }
     }
 
-    /// The root near t_prev (from a lower order), bracketed by a growing step.
-    /// d kappa / dt from the last two evaluations.
-    fn slope(&self) -> f64 {
-        let [(t0, f0), (t1, f1)] = self.hist;
-        (f1 - f0) / (t1 - t0)
+    /// d kappa / dt at the root t: the secant of the two evaluations within 0.1 of t whose
+    /// kappa differ most, if that difference stands out of kappa's rounding noise (10 times
+    /// the smallest |kappa| seen); NaN otherwise.
+    fn slope(&self, t: f64) -> f64 {
+        let near: Vec<&(f64, f64)> = self
+            .evals
+            .iter()
+            .filter(|e| (e.0 - t).abs() <= 0.1)
+            .collect();
+        let noise = near.iter().map(|e| e.1.abs()).fold(f64::INFINITY, f64::min);
+        let mut best = (10.0 * noise, f64::NAN);
+        for (i, a) in near.iter().enumerate() {
+            for b in &near[i + 1..] {
+                let df = (a.1 - b.1).abs();
+                if df > best.0 && a.0 != b.0 {
+                    best = (df, (a.1 - b.1) / (a.0 - b.0));
+                }
+            }
+        }
+        best.1
     }
 
     /// The root near t_prev (from a lower order) by the secant method started with the
-    /// lower order's slope, stopped when the step is below xtol; if that fails, by bracketing
-    /// and Brent. Returns t and its uncertainty |step| + |kappa| / |slope| at the last
-    /// iterate (which also measures the rounding noise of kappa).
+    /// lower order's slope; if that fails, by bracketing and Brent. Returns an evaluated
+    /// point t and its distance from this order's root, |kappa(t)| / |slope| (which also
+    /// measures the rounding noise of kappa), once that is below xtol: usually two solves.
     fn root_near(&mut self, t_prev: f64, slope: f64, first: f64) -> Result<(f64, f64)> {
         self.fix_layout(t_prev);
         let f = self.kappa(t_prev)?;
         if slope.is_finite() && slope != 0.0 {
             let (mut t0, mut f0) = (t_prev, f);
-            let mut t1 = t0 - f0 / slope;
+            let mut step = -f0 / slope;
+            if step.abs() <= self.xtol || f0 == 0.0 {
+                return Ok((t0, step.abs()));
+            }
+            let mut t1 = t0 + step;
             for _ in 0..6 {
-                let f1 = self.kappa(t1)?;
-                let s = if f1 == f0 {
-                    slope
-                } else {
-                    (f1 - f0) / (t1 - t0)
-                };
-                let step = -f1 / s;
-                if !step.is_finite() || step.abs() > 1.0 || s * slope <= 0.0 {
+                if step.abs() > 1.0 {
                     break;
                 }
+                let f1 = self.kappa(t1)?;
+                // the secant slope, unless noise has made it useless: then the lower order's
+                let s = (f1 - f0) / (t1 - t0);
+                let s = if s.is_finite() && s * slope > 0.0 {
+                    s
+                } else {
+                    slope
+                };
+                step = -f1 / s;
                 if step.abs() <= self.xtol || f1 == 0.0 {
-                    return Ok((t1 + step, 2.0 * step.abs()));
+                    return Ok((t1, step.abs()));
                 }
                 if f1.abs() >= f0.abs() {
-                    // no progress: kappa's rounding noise reached; its size sets the
-                    // uncertainty of t
+                    // no progress: kappa's rounding noise reached. The root lies between t0
+                    // and t1 if kappa changes sign there, else within the noise's size
+                    // over the slope
                     let best = if f1.abs() < f0.abs() { t1 } else { t0 };
-                    return Ok((best, 2.0 * (f0.abs().max(f1.abs()) / slope.abs())));
+                    let unc = if f0 * f1 < 0.0 {
+                        (t1 - t0).abs()
+                    } else {
+                        2.0 * f0.abs().max(f1.abs()) / slope.abs()
+                    };
+                    return Ok((best, unc));
                 }
                 (t0, f0) = (t1, f1);
                 t1 += step;
@@ -319,9 +415,33 @@ impl Level<'_> {
     }
 }
 
+/// Largest relative difference of the tractions of two discretisations (different orders,
+/// nearby c) at points of 0 <= x <= 0.99 placed alike relative to each one's stick edge (x c'
+/// / c on the stick zone, 1 - (1 - x) w' / w on the slip zone), so that it measures the
+/// discretisation error rather than the shift of c: |dp| / p + |dq| / (mu p).
+fn traction_gap(d: &Discrete, other: &Discrete) -> f64 {
+    const POINTS: usize = 24;
+    let (c, w) = (d.mesh.c, d.mesh.w);
+    let (c2, w2) = (other.mesh.c, other.mesh.w);
+    (0..POINTS)
+        .map(|i| {
+            let x = 0.99 * (i as f64 + 0.5) / POINTS as f64;
+            let (a, b) = if x < c {
+                let x2 = x * c2 / c;
+                (Pt { x, u: 1.0 - x }, Pt { x: x2, u: 1.0 - x2 })
+            } else {
+                let (u, u2) = (1.0 - x, (1.0 - x) * w2 / w);
+                (Pt { x, u }, Pt { x: 1.0 - u2, u: u2 })
+            };
+            let ((p, q), (p2, q2)) = (d.eval(a), other.eval(b));
+            (p - p2).abs() / p + (q - q2).abs() / (d.k.mu * p)
+        })
+        .fold(0.0, f64::max)
+}
+
 /// Checks |q| <= mu p (to 1e-6 relative) at the stick panels' Gauss points.
 fn admissible(d: &Discrete, mu: f64) -> bool {
-    let (nodes, _) = crate::quadrature::gauss_legendre(7);
+    let nodes = system::legendre_nodes(7);
     d.mesh.panels.iter().filter(|p| p.stick).all(|panel| {
         nodes.iter().all(|&t| {
             let x = if panel.central {
@@ -373,80 +493,70 @@ pub fn solve(k: &Coupling, tol: f64) -> Result<CoupledSolution> {
         mu: r.mu,
         g: r.edge_exponent(),
     };
-    let mut prev: Option<f64> = None;
-    let mut last_diff = 0.0;
-    let mut slope = f64::NAN;
-    let fams = Families::new(consts.g, ORDERS[ORDERS.len() - 1]);
+    // the first root at the scan order (cheap), its slope, then the orders in turn
+    let fams = Families::shared(consts.g, SCAN_ORDER);
+    // tolerances near kappa's rounding noise take the finer (costlier) oversampling
+    let oversample = if tol < FINE_BELOW {
+        system::OVERSAMPLE_FINE
+    } else {
+        system::OVERSAMPLE
+    };
+    let mut level = Level::new(consts, SCAN_ORDER, &fams, SCAN_XTOL, oversample);
+    let mut t = level.first_root(goodman_guess(r.bq, r.mu))?;
+    let (mut unc, mut slope) = (level.xtol, level.slope(t));
+    let mut prev = level.discrete_at(t)?;
+    let mut last_diff = 1.0;
     for &n in &ORDERS {
-        // first order: t to 1e-6 (its own error is larger anyway); later orders: c to 5% of
-        // the tolerance
-        let xtol = match prev {
-            None => 1e-6,
-            Some(t) => {
-                let (c, w) = edge_of(t);
-                (0.05 * tol / (c * w)).clamp(1e-13, 1e-3)
+        // each order locates its root to 5% of the tolerance in c (dc = c (1 - c) dt)
+        let (c_prev, w_prev) = edge_of(t);
+        let xtol = (0.05 * tol / (c_prev * w_prev)).clamp(1e-13, 1e-3);
+        let fams = Families::shared(consts.g, n);
+        let mut level = Level::new(consts, n, &fams, xtol, oversample);
+        let (t_n, unc_n) = level.root_near(t, slope, last_diff)?;
+        let (c, w) = edge_of(t_n);
+        let d = level.discrete_at(t_n)?;
+        // |c - c_prev| from whichever of c, 1 - c is small, plus the distances of both
+        // evaluated points from their order's root (dc = c (1 - c) dt)
+        let diff = if c < 0.5 {
+            (c - c_prev).abs()
+        } else {
+            (w - w_prev).abs()
+        } + c * w * (unc_n + unc);
+        let gap = traction_gap(&d, &prev);
+        if diff <= tol && gap <= (TRACTION_RATIO * tol).max(TRACTION_FLOOR) {
+            if !admissible(&d, consts.mu) {
+                return Err(Error::NoConvergence(format!(
+                    "root c = {c} violates |q| <= mu p on the stick zone"
+                )));
             }
-        };
-        let mut t_unc = 0.0;
-        let mut level = Level {
-            k: consts,
-            n,
-            fams: &fams,
-            layout: None,
-            hist: [(f64::NAN, f64::NAN); 2],
-            xtol,
-        };
-        let t = match prev {
-            None => level.first_root(goodman_guess(r.bq, r.mu))?,
-            Some(t_prev) => {
-                let (t, unc) = level.root_near(t_prev, slope, last_diff)?;
-                t_unc = unc;
-                t
-            }
-        };
-        let (c, w) = edge_of(t);
-        if let Some(t_prev) = prev {
-            let (c_prev, w_prev) = edge_of(t_prev);
-            // |c - c_prev| from whichever of c, 1 - c is small
-            // |c - c_prev| from whichever of c, 1 - c is small, plus the root's own
-            // uncertainty (dc = c (1 - c) dt)
-            let diff = if c < 0.5 {
-                (c - c_prev).abs()
+            let edge = if c < 0.5 {
+                StickEdge::from_c(c)
             } else {
-                (w - w_prev).abs()
-            } + c * w * t_unc;
-            last_diff = (t - t_prev).abs();
-            if diff <= tol {
-                let layout = level.layout.unwrap_or_else(|| Layout::for_edge(c, w));
-                let d = solve_fixed(consts, c, w, n, &fams, &layout)?;
-                if !admissible(&d, consts.mu) {
-                    return Err(Error::NoConvergence(format!(
-                        "root c = {c} violates |q| <= mu p on the stick zone"
-                    )));
-                }
-                let edge = if c < 0.5 {
-                    StickEdge::from_c(c)
-                } else {
-                    StickEdge::from_one_minus_c(w)
-                };
-                return Ok(CoupledSolution {
-                    edge,
-                    error: diff,
-                    delta,
-                    discrete: Some(d),
-                    order: n,
-                });
-            }
-            if n == ORDERS[ORDERS.len() - 1] {
-                return Err(Error::ToleranceNotMet {
-                    estimate: diff,
-                    tolerance: tol,
-                    detail: format!("coupled: orders up to {n} per panel"),
-                });
-            }
+                StickEdge::from_one_minus_c(w)
+            };
+            return Ok(CoupledSolution {
+                edge,
+                error: diff,
+                delta,
+                discrete: Some(d),
+                order: n,
+            });
         }
-        prev = Some(t);
-        slope = level.slope();
+        if n == ORDERS[ORDERS.len() - 1] {
+            return Err(Error::ToleranceNotMet {
+                estimate: diff,
+                tolerance: tol,
+                detail: format!(
+                    "coupled: orders up to {n} per panel (tractions agree to {gap:.1e})"
+                ),
+            });
+        }
+        last_diff = (t_n - t).abs();
+        // the slope of this order if it made two evaluations near its root
+        slope = Some(level.slope(t_n))
+            .filter(|s| s.is_finite())
+            .unwrap_or(slope);
+        (t, unc, prev) = (t_n, unc_n, d);
     }
     Err(Error::Internal("coupled: order loop fell through".into()))
 }

@@ -313,17 +313,10 @@ fn c_at_order(k: Constants, n: usize) -> f64 {
 /// The discretisation at the root of kappa at a fixed order n.
 fn discrete_at_order(k: Constants, n: usize) -> Discrete {
     let fams = Families::new(k.g, n);
-    let mut level = Level {
-        k,
-        n,
-        fams: &fams,
-        layout: None,
-        hist: [(f64::NAN, f64::NAN); 2],
-        xtol: 0.0,
-    };
+    let mut level = Level::new(k, n, &fams, 0.0, system::OVERSAMPLE);
     let (c, w) = edge_of(level.first_root(goodman_guess(k.bq, k.mu)).unwrap());
     let layout = level.layout.unwrap();
-    solve_fixed(k, c, w, n, &fams, &layout).unwrap()
+    solve_fixed(k, c, w, n, &fams, &layout, system::OVERSAMPLE).unwrap()
 }
 
 /// Geometric convergence in the order, and the error estimate bounds the true error.
