@@ -316,16 +316,8 @@ impl WeightedFamily {
     /// C_k(y) for k < min(out.len(), degrees) into `out` (y real, not a panel end point).
     pub fn cauchy(&self, y: f64, out: &mut [f64]) {
         let n = out.len().min(self.degrees);
-        let stride = self.degrees;
         if let Some(r) = FAR_BANDS.iter().position(|&lim| y.abs() > lim) {
-            let (nodes, wp) = &self.far[r];
-            out[..n].fill(0.0);
-            for (j, &t) in nodes.iter().enumerate() {
-                let inv = 1.0 / (y - t);
-                for (o, v) in out[..n].iter_mut().zip(&wp[j * stride..j * stride + n]) {
-                    *o += v * inv;
-                }
-            }
+            self.far_sum(r, |t| 1.0 / (y - t), &mut out[..n]);
             return;
         }
         out[0] = self.weight.cauchy0(y);
@@ -336,6 +328,35 @@ impl WeightedFamily {
             let kf = k as f64;
             out[k + 1] =
                 ((2.0 * kf + 1.0) * (y * out[k] - self.moments[k]) - kf * out[k - 1]) / (kf + 1.0);
+        }
+    }
+
+    /// C_k(y) + sign C_k(y2) for |y2| >= |y| (the mirrored target) into `out`; `buf` is
+    /// scratch of the same length. When y is in a far band, its rule serves y2 as well (it is
+    /// only more accurate farther away), so both cost one pass over the nodes.
+    pub fn cauchy_pair(&self, y: f64, y2: f64, sign: f64, out: &mut [f64], buf: &mut [f64]) {
+        let n = out.len().min(self.degrees);
+        if let Some(r) = FAR_BANDS.iter().position(|&lim| y.abs() > lim) {
+            self.far_sum(r, |t| 1.0 / (y - t) + sign / (y2 - t), &mut out[..n]);
+            return;
+        }
+        self.cauchy(y, &mut out[..n]);
+        self.cauchy(y2, &mut buf[..n]);
+        for (o, b) in out[..n].iter_mut().zip(&buf[..n]) {
+            *o += sign * b;
+        }
+    }
+
+    /// sum_j f(t_j) w_j P_k(t_j) over the nodes of far band r into `out`.
+    fn far_sum(&self, r: usize, f: impl Fn(f64) -> f64, out: &mut [f64]) {
+        let (nodes, wp) = &self.far[r];
+        let (n, stride) = (out.len(), self.degrees);
+        out.fill(0.0);
+        for (&t, row) in nodes.iter().zip(wp.chunks_exact(stride)) {
+            let v = f(t);
+            for (o, p) in out.iter_mut().zip(&row[..n]) {
+                *o += p * v;
+            }
         }
     }
 }
@@ -494,6 +515,25 @@ mod tests {
                         out[k]
                     );
                 }
+            }
+        }
+    }
+
+    /// cauchy_pair equals the two transforms summed (far and near y, mirrored farther).
+    #[test]
+    fn pair_is_the_sum() {
+        let fam = WeightedFamily::new(Weight::Left(0.3), 13);
+        let (mut out, mut buf, mut a, mut b) =
+            (vec![0.0; 13], vec![0.0; 13], vec![0.0; 13], vec![0.0; 13]);
+        for (y, y2) in [(0.4, -3.0), (1.3, -2.2), (5.0, -200.0), (-45.0, -46.0)] {
+            fam.cauchy_pair(y, y2, -1.0, &mut out, &mut buf);
+            fam.cauchy(y, &mut a);
+            fam.cauchy(y2, &mut b);
+            for k in 0..13 {
+                assert!(
+                    (out[k] - (a[k] - b[k])).abs() < 1e-14 * (1.0 + a[k].abs()),
+                    "y {y} k {k}"
+                );
             }
         }
     }

@@ -239,10 +239,9 @@ fn add_hilbert(
     let ym = -(x.x + q.m.x) / q.h;
     for b in blocks {
         let fam = fams.get(b.weight);
-        fam.cauchy(y, &mut buf[..b.count]);
-        fam.cauchy(ym, &mut buf2[..b.count]);
-        for (u, v) in buf[..b.count].iter().zip(&buf2[..b.count]) {
-            row[col] += scale * (u + sign * v) / PI;
+        fam.cauchy_pair(y, ym, sign, &mut buf[..b.count], &mut buf2[..b.count]);
+        for u in &buf[..b.count] {
+            row[col] += scale * u / PI;
             col += 1;
         }
     }
