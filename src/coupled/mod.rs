@@ -10,17 +10,18 @@
 //! - c is the root of kappa(c), the coefficient of q's (c - x)^(g-1) mode (bounded q at c is
 //!   the compatibility condition), found in t = ln(c / (1 - c)) so that c ~ 1e-20 and
 //!   1 - c ~ 1e-12 are both carried to full relative accuracy;
-//! - the order is raised (4, then 6, 8, 11, 13, 16, ...) until two successive orders agree on c within
-//!   the tolerance (their difference plus both roots' location uncertainties) and on the
-//!   tractions within 100 tol (at most 1e-9). Each order starts from the
-//!   previous order's root and slope: one secant (Newton) step, usually two solves.
+//! - the order is raised (4, then 6, 8, 11, 13, 16, ...) until two successive orders agree
+//!   on c within the tolerance (twice their difference plus both roots' location
+//!   uncertainties) and on the tractions within 100 tol (at most 1e-9). Each order starts
+//!   from the previous order's root and slope: one secant step, usually two solves.
 //!
 //! Which root: kappa < 0 for small c (checked at a c far below Goodman's estimate, walking
 //! down until it is; never above c = 1/2), then c is increased in t (steps of 1 to 3, a
 //! little beyond the linearly extrapolated zero) until kappa (at the cheap order 4) changes
 //! sign: the first sign change met from c = 0 brackets the physical root (the one
-//! continuous in mu from small friction), which Brent's method then refines at order 4. The
-//! solution is checked for |q| <= mu p on the stick zone before it is returned.
+//! continuous in mu from small friction); a bracket wider than 1 is bisected, then Brent's
+//! method refines the root at order 4 (if a higher order loses it, the search is redone at
+//! that order). The solution is checked for |q| <= mu p on the stick zone before it is returned.
 //!
 //! Range: 2e-35 < c and 1 - c > 4e-18 (outside it NoConvergence says so); the number of
 //! panels grows like log(1 / min(c, 1 - c)). Cost (measured, one core, shared machine):
@@ -59,6 +60,9 @@ const TRACTION_RATIO: f64 = 100.0;
 /// The traction agreement asked for at most (below it, the least-squares rounding noise
 /// of the higher orders would decide).
 const TRACTION_FLOOR: f64 = 1e-9;
+
+/// Factor on the difference of two successive orders' c in the error estimate.
+const ORDER_SAFETY: f64 = 2.0;
 
 /// Tolerances below which the finer oversampling is used (kappa's noise at the default one
 /// is 1e-12 .. 1e-13 in c at orders 10-26).
@@ -294,15 +298,29 @@ impl<'a> Level<'a> {
             let hi = lo + step;
             let f_hi = self.kappa(hi)?;
             if f_hi >= 0.0 {
+                // a bracket wider than 1: bisect it (each point its own layout) first
+                let (mut lo, mut hi, mut f_lo, mut f_hi) = (lo, hi, f_lo, f_hi);
+                while hi - lo > SCAN_STEP {
+                    let mid = 0.5 * (lo + hi);
+                    let f_mid = self.kappa(mid)?;
+                    if f_mid >= 0.0 {
+                        (hi, f_hi) = (mid, f_mid);
+                    } else {
+                        (lo, f_lo) = (mid, f_mid);
+                    }
+                }
                 // refine around the interpolated zero with its layout fixed: first a narrow
                 // bracket, then (the scan order's sign may be off within its error of the
                 // root, or kappa far from linear) the scan's bracket widened
                 self.n = order;
-                let t_s = lo + step * f_lo / (f_lo - f_hi);
+                let t_s = lo + (hi - lo) * f_lo / (f_lo - f_hi);
                 for (a, b) in [(t_s - 0.25, t_s + 0.25), (lo - 0.5, hi + 0.5)] {
                     self.fix_layout(0.5 * (a + b));
-                    let (f_a, f_b) = (self.kappa(a)?, self.kappa(b)?);
-                    if f_a < 0.0 && f_b >= 0.0 {
+                    // a bracket the layout does not fit is skipped
+                    if let (Ok(f_a), Ok(f_b)) = (self.kappa(a), self.kappa(b))
+                        && f_a < 0.0
+                        && f_b >= 0.0
+                    {
                         return self.brent(a, b, f_a, f_b);
                     }
                 }
@@ -512,16 +530,30 @@ pub fn solve(k: &Coupling, tol: f64) -> Result<CoupledSolution> {
         let xtol = (0.05 * tol / (c_prev * w_prev)).clamp(1e-13, 1e-3);
         let fams = Families::shared(consts.g, n);
         let mut level = Level::new(consts, n, &fams, xtol, oversample);
-        let (t_n, unc_n) = level.root_near(t, slope, last_diff)?;
+        let (t_n, unc_n) = match level.root_near(t, slope, last_diff) {
+            Ok(r) => r,
+            Err(_) => {
+                // a step left the layout's range or the root moved away: the first-root
+                // search again (scan from below at the scan order, Brent at this order)
+                level = Level::new(consts, n, &fams, xtol, oversample);
+                (level.first_root(t)?, xtol)
+            }
+        };
         let (c, w) = edge_of(t_n);
         let d = level.discrete_at(t_n)?;
-        // |c - c_prev| from whichever of c, 1 - c is small, plus the distances of both
-        // evaluated points from their order's root (dc = c (1 - c) dt)
-        let diff = if c < 0.5 {
-            (c - c_prev).abs()
+        // The difference between the orders' roots: |c - c_prev| from whichever of c, 1 - c
+        // is small, or, if the previous order's point was already within xtol of this
+        // order's root, the step to it (dc = c (1 - c) dt). Twice that (orders 2-3 apart, the
+        // error does not always fall far below the lower order's), plus the distances of
+        // both evaluated points from their order's root.
+        let (dc, own) = if t_n == t {
+            (c * w * unc_n, c * w * unc_n)
+        } else if c < 0.5 {
+            ((c - c_prev).abs(), c * w * unc_n)
         } else {
-            (w - w_prev).abs()
-        } + c * w * (unc_n + unc);
+            ((w - w_prev).abs(), c * w * unc_n)
+        };
+        let diff = ORDER_SAFETY * dc + own + c * w * unc;
         let gap = traction_gap(&d, &prev);
         if diff <= tol && gap <= (TRACTION_RATIO * tol).max(TRACTION_FLOOR) {
             if !admissible(&d, consts.mu) {
