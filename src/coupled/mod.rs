@@ -12,7 +12,7 @@
 //!   1 - c ~ 1e-12 are both carried to full relative accuracy;
 //! - the order is raised (4, then 6, 8, 11, 13, 16, ...) until two successive orders agree
 //!   on c within the tolerance (twice their difference plus both roots' location
-//!   uncertainties) and on the tractions within 100 tol (at most 1e-9). Each order starts
+//!   uncertainties) and on the tractions within max(100 tol, 1e-9). Each order starts
 //!   from the previous order's root and slope: one secant step, usually two solves.
 //!
 //! Which root: kappa < 0 for small c (checked at a c far below Goodman's estimate, walking
@@ -21,11 +21,12 @@
 //! sign: the first sign change met from c = 0 brackets the physical root (the one
 //! continuous in mu from small friction); a bracket wider than 1 is bisected, then Brent's
 //! method refines the root at order 4 (if a higher order loses it, the search is redone at
-//! that order). The solution is checked for |q| <= mu p on the stick zone before it is returned.
+//! that order). The solution is checked for |q| <= mu p on the stick zone before it is
+//! returned.
 //!
 //! Range: 2e-35 < c and 1 - c > 4e-18 (outside it NoConvergence says so); the number of
 //! panels grows like log(1 / min(c, 1 - c)). Cost (measured, one core, shared machine):
-//! 6-45 ms per solve to tol = 1e-10 and 2.5-14 ms to 1e-6 for c in [5e-5, 1 - 2e-3]
+//! 5-31 ms per solve to tol = 1e-10 and 2-9 ms to 1e-6 for c in [5e-5, 1 - 2e-3]
 //! (6-9 cheap order-4 solves, then about two column-pivoted least-squares solves per order,
 //! 100-350 unknowns at the last); the first solve for a new edge exponent g also builds the
 //! transform families (0.2-0.4 ms per order, then shared); tractions 30-60 ns per point.
