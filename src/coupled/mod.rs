@@ -513,7 +513,7 @@ pub fn solve(k: &Coupling, tol: f64) -> Result<CoupledSolution> {
         g: r.edge_exponent(),
     };
     // the first root at the scan order (cheap), its slope, then the orders in turn
-    let fams = Families::shared(consts.g, SCAN_ORDER);
+    let fams = Families::new(consts.g, SCAN_ORDER);
     // tolerances near kappa's rounding noise take the finer (costlier) oversampling
     let oversample = if tol < FINE_BELOW {
         system::OVERSAMPLE_FINE
@@ -529,7 +529,7 @@ pub fn solve(k: &Coupling, tol: f64) -> Result<CoupledSolution> {
         // each order locates its root to 5% of the tolerance in c (dc = c (1 - c) dt)
         let (c_prev, w_prev) = edge_of(t);
         let xtol = (0.05 * tol / (c_prev * w_prev)).clamp(1e-13, 1e-3);
-        let fams = Families::shared(consts.g, n);
+        let fams = Families::new(consts.g, n);
         let mut level = Level::new(consts, n, &fams, xtol, oversample);
         let (t_n, unc_n) = match level.root_near(t, slope, last_diff) {
             Ok(r) => r,

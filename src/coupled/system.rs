@@ -15,7 +15,7 @@ use crate::quadrature::gauss_legendre;
 use faer::Mat;
 use faer::linalg::solvers::SolveLstsq;
 use std::f64::consts::PI;
-use std::sync::{Arc, Mutex, OnceLock};
+use std::sync::OnceLock;
 
 /// Collocation points per unknown: the oversampled system is solved in the least-squares
 /// sense (Householder QR), which keeps the redundant singular-plus-regular bases of the
@@ -39,44 +39,15 @@ pub struct Constants {
     pub g: f64,
 }
 
-/// The Cauchy-transform families of every weight the mesh uses, for order n.
+/// The Cauchy-transform families of every weight the mesh uses, for order n. Built inside
+/// each solve: no cache outlives it, so solves share no mutable state (a process-wide cache
+/// measured 5-10% faster per solve, not worth global state).
 #[derive(Clone, Debug)]
 pub struct Families {
     fams: Vec<WeightedFamily>,
 }
 
-/// Families kept by [`Families::shared`] (most recently used last).
-const SHARED_FAMILIES: usize = 32;
-
 impl Families {
-    /// The families for exponent g and order n, shared between solves (and threads) with
-    /// the same g and n: building them (Gauss-Jacobi rules) costs more than a low-order solve.
-    pub fn shared(g: f64, n: usize) -> Arc<Self> {
-        static CACHE: Mutex<Vec<(u64, usize, Arc<Families>)>> = Mutex::new(Vec::new());
-        let key = g.to_bits();
-        let lookup = |cache: &mut Vec<(u64, usize, Arc<Families>)>| {
-            let i = cache.iter().position(|e| e.0 == key && e.1 == n)?;
-            let entry = cache.remove(i);
-            let fams = Arc::clone(&entry.2);
-            cache.push(entry);
-            Some(fams)
-        };
-        if let Some(f) = lookup(&mut CACHE.lock().unwrap_or_else(|e| e.into_inner())) {
-            return f;
-        }
-        // built outside the lock: other threads are not held up by it
-        let fams = Arc::new(Self::new(g, n));
-        let mut cache = CACHE.lock().unwrap_or_else(|e| e.into_inner());
-        if let Some(f) = lookup(&mut cache) {
-            return f;
-        }
-        if cache.len() >= SHARED_FAMILIES {
-            cache.remove(0);
-        }
-        cache.push((key, n, Arc::clone(&fams)));
-        fams
-    }
-
     /// Families for exponent g and order n (Legendre degrees below n).
     pub fn new(g: f64, n: usize) -> Self {
         let weights = [
