@@ -140,7 +140,11 @@ pub fn heatmap(
 ) -> Result<(), Box<dyn std::error::Error>> {
     let logs: Vec<Vec<f64>> = values
         .iter()
-        .map(|row| row.iter().map(|v| v.max(1e-17).log10()).collect())
+        .map(|row| {
+            row.iter()
+                .map(|&v| if v.is_nan() { v } else { v.max(1e-17).log10() })
+                .collect()
+        })
         .collect();
     let (lo, hi) = logs
         .iter()
