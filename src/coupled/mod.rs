@@ -222,56 +222,11 @@ impl<'a> Level<'a> {
         let (c, w) = edge_of(t);
         self.layout = Some(Layout::for_edge(c, w));
     }
-    /// Brent's method on kappa(t) in [a, b] with kappa(a) < 0 < kappa(b).
-    fn brent(&mut self, mut a: f64, mut b: f64, mut fa: f64, mut fb: f64) -> Result<f64> {
+    /// Brent's method on kappa(t) in [a, b] with kappa(a) < 0 < kappa(b), to this level's
+    /// xtol in t.
+    fn brent(&mut self, a: f64, b: f64, fa: f64, fb: f64) -> Result<f64> {
         let xtol = self.xtol;
-        let (mut c, mut fc) = (a, fa);
-        let (mut d, mut e) = (b - a, b - a);
-        for _ in 0..100 {
-            if fb * fc > 0.0 {
-                (c, fc) = (a, fa);
-                d = b - a;
-                e = d;
-            }
-            if fc.abs() < fb.abs() {
-                (a, fa, b, fb, c, fc) = (b, fb, c, fc, b, fb);
-            }
-            let tol = xtol.max(4.0 * f64::EPSILON * b.abs().max(1.0));
-            let m = 0.5 * (c - b);
-            if m.abs() <= tol || fb == 0.0 {
-                return Ok(b);
-            }
-            if e.abs() >= tol && fa.abs() > fb.abs() {
-                let s = fb / fa;
-                let (mut p, mut q) = if a == c {
-                    (2.0 * m * s, 1.0 - s)
-                } else {
-                    let (qq, r) = (fa / fc, fb / fc);
-                    (
-                        s * (2.0 * m * qq * (qq - r) - (b - a) * (r - 1.0)),
-                        (qq - 1.0) * (r - 1.0) * (s - 1.0),
-                    )
-                };
-                if p > 0.0 {
-                    q = -q;
-                }
-                p = p.abs();
-                if 2.0 * p < (3.0 * m * q - (tol * q).abs()).min((e * q).abs()) {
-                    e = d;
-                    d = p / q;
-                } else {
-                    d = m;
-                    e = m;
-                }
-            } else {
-                d = m;
-                e = m;
-            }
-            (a, fa) = (b, fb);
-            b += if d.abs() > tol { d } else { tol.copysign(m) };
-            fb = self.kappa(b)?;
-        }
-        Err(Error::NoConvergence("Brent iteration limit in c".into()))
+        crate::roots::brent(|t| self.kappa(t), (a, fa), (b, fb), xtol, 100)
     }
 
     /// First sign change of kappa met increasing c from 0 (scanned at order SCAN_ORDER),

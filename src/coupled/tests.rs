@@ -16,15 +16,9 @@ fn steel() -> f64 {
 
 /// Carbon/epoxy ply in plane stress (THEORY.md section 2): (bp, bq).
 fn carbon() -> (f64, f64) {
-    let (e11, e22, g12, nu12): (f64, f64, f64, f64) = (181e9, 10.3e9, 7.17e9, 0.28);
-    let e = (e11 * e22).sqrt();
-    let delta = (e11 / e22).sqrt().sqrt();
-    let nu = (nu12 * nu12 * e22 / e11).sqrt();
-    let kappa = e / (2.0 * g12) - nu;
-    let a = (1.0 - nu) / e;
-    let b = (2.0 * (1.0 + kappa)).sqrt() / (PI * delta * e);
-    let c = delta * (2.0 * (1.0 + kappa)).sqrt() / (PI * e);
-    (a / (PI * c), a / (PI * b))
+    let ply = crate::material::Material::plane_stress(181e9, 10.3e9, 7.17e9, 0.28).unwrap();
+    let k = ply.coupling(0.0);
+    (k.bp, k.bq)
 }
 
 /// Break points of the composite rule: dyadically graded towards the given points.
