@@ -19,15 +19,16 @@
 
 pub mod contact;
 pub mod error;
-pub mod goodman;
 pub mod material;
-pub mod problem;
-pub mod roots;
-// solver modules:
-pub mod coupled;
-pub mod lcp;
 pub mod model_error;
+pub mod problem;
 pub mod quadrature;
+pub mod roots;
+
+// The methods.
+pub mod coupled;
+pub mod goodman;
+pub mod lcp;
 pub mod spence;
 
 pub mod ffi;
