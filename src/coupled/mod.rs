@@ -136,17 +136,11 @@ fn edge_of(t: f64) -> (f64, f64) {
     (1.0 / (1.0 + (-t).exp()), 1.0 / (1.0 + t.exp()))
 }
 
-/// Leading-order Goodman estimate of t (THEORY.md section 5, first term of the theta series).
+/// Goodman's stick edge (the closed form of [`crate::goodman::stick_edge`]) as a starting
+/// t = ln(c / (1 - c)), clamped to the range the scan works in.
 fn goodman_guess(bq: f64, mu: f64) -> f64 {
-    let r = bq / mu;
-    let t = if r >= 1.0 {
-        let c = 4.0 * (-0.5 * PI * r).exp();
-        c.ln() - (-c).ln_1p()
-    } else {
-        let w = 8.0 * (-PI / r).exp();
-        (-w).ln_1p() - w.ln()
-    };
-    t.clamp(-60.0, 30.0)
+    let e = crate::goodman::stick_edge(bq / mu);
+    (e.c.ln() - e.one_minus_c.ln()).clamp(-60.0, 30.0)
 }
 
 /// Root finder state for one order n.
