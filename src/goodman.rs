@@ -140,22 +140,25 @@ impl Profile for GoodmanSolution {
     }
 }
 
+/// Test reference for every method's Goodman limit: the root c of Goodman's equation
+/// K(sqrt(1 - c^2)) / K(c) = ratio by bisection on `ellip::ellipk` (parameter m = k^2) down to
+/// adjacent doubles, independent of the theta-function closed form of [`stick_edge`].
+#[cfg(test)]
+pub(crate) fn c_by_bisection(ratio: f64) -> f64 {
+    let f = |c: f64| ellip::ellipk((1.0 - c) * (1.0 + c)).unwrap() / ellip::ellipk(c * c).unwrap();
+    let (mut lo, mut hi) = (0.0_f64, 1.0_f64);
+    loop {
+        let mid = 0.5 * (lo + hi);
+        if mid <= lo || mid >= hi {
+            return mid;
+        }
+        if f(mid) > ratio { lo = mid } else { hi = mid }
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    /// Goodman's equation by bisection on K from the `ellip` crate (parameter m = k^2): an
-    /// independent route to c.
-    fn c_by_bisection(ratio: f64) -> f64 {
-        let f =
-            |c: f64| ellip::ellipk(1.0 - c * c).unwrap() / ellip::ellipk(c * c).unwrap() - ratio;
-        let (mut lo, mut hi) = (1e-300_f64, 1.0 - 1e-16);
-        for _ in 0..200 {
-            let mid = 0.5 * (lo + hi);
-            if f(mid) > 0.0 { lo = mid } else { hi = mid }
-        }
-        0.5 * (lo + hi)
-    }
 
     #[test]
     fn theta_form_agrees_with_elliptic_root() {
@@ -188,7 +191,7 @@ mod tests {
         let mut cuts = [-1.0, -c, x, c, 1.0];
         cuts.sort_by(f64::total_cmp);
         let fx = f(x);
-        let (nodes, weights) = crate::quadrature::gauss_legendre(20);
+        let (nodes, weights) = crate::numerics::quadrature::gauss_legendre(20);
         let mut sum = 0.0;
         for w in cuts.windows(2) {
             let (a, b) = (w[0], w[1]);

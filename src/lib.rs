@@ -22,8 +22,9 @@ pub mod error;
 pub mod material;
 pub mod model_error;
 pub mod problem;
-pub mod quadrature;
-pub mod roots;
+
+// The numerical tools the methods share.
+pub(crate) mod numerics;
 
 // The methods.
 pub mod coupled;

@@ -1,6 +1,6 @@
 //! Panels on 0 <= x <= 1 (p even and q odd supply -1 < x < 0) graded geometrically towards
 //! the singular points x = c and x = 1, and the basis carried by each panel: weighted
-//! Legendre polynomials whose weights hold the local exponents of COUPLED.md:
+//! Legendre polynomials ([`Basis`]) whose weights hold the local exponents (THEORY.md section 5):
 //! - central panel [-l, l]: p and q / x polynomials in x^2;
 //! - stick panels: p, q polynomials; the one ending at c adds q (c - x)^g P_k and the
 //!   wrong-c mode (c - x)^(g-1);
@@ -10,21 +10,21 @@
 //! Grading ([`Layout`]): each panel lies at least its own width away from every singular
 //! point that its basis does not carry, so the error decays geometrically in the order n.
 
-use super::cauchy::Weight;
+use crate::numerics::cauchy::Weight;
 
 /// A point of [0, 1] held both as x and as u = 1 - x, each to full relative accuracy, so
 /// that lengths near x = 1 (slip zones of width 1e-9 and less) keep their relative accuracy.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Pt {
+pub(crate) struct Pt {
     /// x.
-    pub x: f64,
+    pub(crate) x: f64,
     /// 1 - x.
-    pub u: f64,
+    pub(crate) u: f64,
 }
 
 impl Pt {
     /// The point at signed distance s from the stick edge (c, w = 1 - c).
-    pub fn from_edge(c: f64, w: f64, s: f64) -> Self {
+    pub(crate) fn from_edge(c: f64, w: f64, s: f64) -> Self {
         let u = w - s;
         if u < 0.5 {
             Pt { x: 1.0 - u, u }
@@ -35,7 +35,7 @@ impl Pt {
     }
 
     /// The point at local coordinate t of the panel with centre m and half-width h.
-    pub fn local(m: Pt, h: f64, t: f64) -> Self {
+    pub(crate) fn local(m: Pt, h: f64, t: f64) -> Self {
         let (x, u) = (m.x + h * t, m.u - h * t);
         if u < 0.5 {
             Pt { x: 1.0 - u, u }
@@ -45,7 +45,7 @@ impl Pt {
     }
 
     /// self - other (x difference) without cancellation near x = 1.
-    pub fn minus(self, other: Pt) -> f64 {
+    pub(crate) fn minus(self, other: Pt) -> f64 {
         if self.u < 0.5 && other.u < 0.5 {
             other.u - self.u
         } else {
@@ -54,42 +54,90 @@ impl Pt {
     }
 }
 
-/// `count` functions weight(t) P_k(t) on a panel, t in [-1, 1] the local coordinate.
+/// The panel bases, each a family weight(t) P_k(t) whose endpoint weight carries one local
+/// exponent of the solution; [`Basis::weight`] is the one place the weights are built.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Basis {
+    /// Polynomials (w = 1).
+    Plain,
+    /// q on the stick panel ending at c: (c - x)^g.
+    StickEdge,
+    /// q's wrong-c mode on that panel, (c - x)^(g-1): its coefficient is the root function.
+    StickWrongC,
+    /// p on the slip panel starting at c: (x - c)^g.
+    SlipEdge,
+    /// p's wrong-c mode on that panel: (x - c)^(g-1).
+    SlipWrongC,
+    /// p on the panel ending at the punch edge: (1 - x)^(-g).
+    PunchEdge,
+    /// The central panel's p in the variable Y: (1 + Y)^(-1/2).
+    CentralP,
+    /// The central panel's q / x in Y: (1 + Y)^(1/2).
+    CentralQ,
+}
+
+impl Basis {
+    /// Every basis, in discriminant order (the index of its transform family).
+    pub(crate) const ALL: [Basis; 8] = [
+        Basis::Plain,
+        Basis::StickEdge,
+        Basis::StickWrongC,
+        Basis::SlipEdge,
+        Basis::SlipWrongC,
+        Basis::PunchEdge,
+        Basis::CentralP,
+        Basis::CentralQ,
+    ];
+
+    /// The endpoint weight on the local coordinate t in [-1, 1] for edge exponent g.
+    pub(crate) fn weight(self, g: f64) -> Weight {
+        match self {
+            Basis::Plain => Weight::One,
+            Basis::StickEdge => Weight::Right(g),
+            Basis::StickWrongC => Weight::Right(g - 1.0),
+            Basis::SlipEdge => Weight::Left(g),
+            Basis::SlipWrongC => Weight::Left(g - 1.0),
+            Basis::PunchEdge => Weight::Right(-g),
+            Basis::CentralP => Weight::Left(-0.5),
+            Basis::CentralQ => Weight::Left(0.5),
+        }
+    }
+}
+
+/// `count` functions of one basis on a panel.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Block {
-    /// Endpoint weight.
-    pub weight: Weight,
-    /// Number of functions.
-    pub count: usize,
-    /// The wrong-c mode (exponent g - 1 at c): its coefficient is the root function.
-    pub wrong_c: bool,
+pub(crate) struct Block {
+    /// The basis.
+    pub(crate) basis: Basis,
+    /// Number of functions (Legendre degrees 0..count).
+    pub(crate) count: usize,
 }
 
 /// One panel [a, b] of [0, 1]. The central panel [0, l] stands for [-l, l]: there p and q/x
 /// are polynomials in Y = 2 x^2 / l^2 - 1 (p even and q odd built in), so the transforms reduce
 /// to the weights (1 + Y)^(-1/2) and (1 + Y)^(1/2) in Y.
 #[derive(Clone, Debug)]
-pub struct Panel {
+pub(crate) struct Panel {
     /// Left end.
-    pub a: Pt,
+    pub(crate) a: Pt,
     /// Right end.
-    pub b: Pt,
+    pub(crate) b: Pt,
     /// Midpoint.
-    pub m: Pt,
+    pub(crate) m: Pt,
     /// Half-width.
-    pub h: f64,
+    pub(crate) h: f64,
     /// The central panel (variable Y = 2 x^2 / l^2 - 1).
-    pub central: bool,
+    pub(crate) central: bool,
     /// Inside the stick zone.
-    pub stick: bool,
+    pub(crate) stick: bool,
     /// Basis of p.
-    pub p: Vec<Block>,
+    pub(crate) p: Vec<Block>,
     /// Basis of q (stick panels only; q = mu p on slip panels).
-    pub q: Vec<Block>,
+    pub(crate) q: Vec<Block>,
     /// Offset of this panel's p coefficients in the unknown vector.
-    pub p_offset: usize,
+    pub(crate) p_offset: usize,
     /// Offset of this panel's q coefficients.
-    pub q_offset: usize,
+    pub(crate) q_offset: usize,
 }
 
 impl Panel {
@@ -112,7 +160,7 @@ impl Panel {
 
     /// Local coordinate t of the point x (|t| <= 1 inside), with 1 - t and 1 + t computed
     /// from the distances to the ends.
-    pub fn local(&self, x: Pt) -> (f64, f64, f64) {
+    pub(crate) fn local(&self, x: Pt) -> (f64, f64, f64) {
         if self.central {
             let r = x.x / self.h;
             let (db, dsum) = (self.b.minus(x) / self.h, 1.0 + r);
@@ -123,12 +171,12 @@ impl Panel {
     }
 
     /// Number of p (resp. q) unknowns.
-    pub fn np(&self) -> usize {
+    pub(crate) fn np(&self) -> usize {
         self.p.iter().map(|b| b.count).sum()
     }
 
     /// Number of q unknowns.
-    pub fn nq(&self) -> usize {
+    pub(crate) fn nq(&self) -> usize {
         self.q.iter().map(|b| b.count).sum()
     }
 }
@@ -138,7 +186,7 @@ impl Panel {
 /// c + sigma slip[k] (the end panel takes the rest). Fixed while c is refined, so that the
 /// root function kappa(c) is smooth.
 #[derive(Clone, Debug, PartialEq)]
-pub struct Layout {
+pub(crate) struct Layout {
     stick: Vec<f64>,
     slip: Vec<f64>,
 }
@@ -148,7 +196,7 @@ impl Layout {
     /// further panel stays at least its own width away from c (and from 1), down to the
     /// central panel [-l, l] with l <= 1.5 times its distance from c (local Bernstein
     /// parameter >= 4.4, so errors decay at least like 4.4^(-n)).
-    pub fn for_edge(c: f64, w: f64) -> Self {
+    pub(crate) fn for_edge(c: f64, w: f64) -> Self {
         let sigma = c.min(w);
         let h = 0.5 * sigma;
         let mut stick = vec![h];
@@ -187,49 +235,34 @@ impl Layout {
 
 /// The discretisation for a given c (w = 1 - c accurate) and polynomial order n.
 #[derive(Clone, Debug)]
-pub struct Mesh {
+pub(crate) struct Mesh {
     /// Stick half-width.
-    pub c: f64,
+    pub(crate) c: f64,
     /// 1 - c.
-    pub w: f64,
+    pub(crate) w: f64,
     /// Panels left to right, central first.
-    pub panels: Vec<Panel>,
+    pub(crate) panels: Vec<Panel>,
     /// Index of the stick panel ending at c.
-    pub c_stick: usize,
-    /// Index of the slip panel starting at c.
-    pub c_slip: usize,
+    pub(crate) c_stick: usize,
     /// Total number of unknowns.
-    pub unknowns: usize,
+    pub(crate) unknowns: usize,
 }
 
 /// Shorthand for a [`Block`].
-fn block(weight: Weight, count: usize) -> Block {
-    Block {
-        weight,
-        count,
-        wrong_c: false,
-    }
-}
-
-/// The single wrong-c mode with exponent e = g - 1.
-fn wrong_c(weight: Weight) -> Block {
-    Block {
-        weight,
-        count: 1,
-        wrong_c: true,
-    }
+fn block(basis: Basis, count: usize) -> Block {
+    Block { basis, count }
 }
 
 impl Mesh {
-    /// Builds the panels for stick edge c (0 < c < 1, w = 1 - c), order n, edge exponent g,
+    /// Builds the panels for stick edge c (0 < c < 1, w = 1 - c) and order n,
     /// with the panel break points of `layout` scaled to this c; None if the layout does not
     /// fit (it was made for a too different c). Uncoupled (bp = 0): p = p0 is smooth at c,
     /// and the slip panel at c carries polynomials only (the redundant singular blocks would
     /// only cost conditioning).
-    pub fn new(c: f64, w: f64, n: usize, g: f64, coupled: bool, layout: &Layout) -> Option<Self> {
+    pub(crate) fn new(c: f64, w: f64, n: usize, coupled: bool, layout: &Layout) -> Option<Self> {
         let sigma = c.min(w);
         let at = |s: f64| Pt::from_edge(c, w, s);
-        let one = |count| block(Weight::One, count);
+        let one = |count| block(Basis::Plain, count);
         let stick_d: Vec<f64> = layout.stick.iter().map(|r| r * sigma).collect();
         let slip_d: Vec<f64> = layout.slip.iter().map(|r| r * sigma).collect();
         let widths = |d: &[f64]| d[d.len() - 1] - if d.len() > 1 { d[d.len() - 2] } else { 0.0 };
@@ -251,8 +284,8 @@ impl Mesh {
             let q = if k == 0 {
                 vec![
                     one(n),
-                    block(Weight::Right(g), n),
-                    wrong_c(Weight::Right(g - 1.0)),
+                    block(Basis::StickEdge, n),
+                    block(Basis::StickWrongC, 1),
                 ]
             } else {
                 vec![one(n)]
@@ -266,14 +299,13 @@ impl Mesh {
             ));
         }
         let c_stick = panels.len() - 1;
-        let c_slip = panels.len();
         for k in 0..slip_d.len() {
             let left = at(if k == 0 { 0.0 } else { slip_d[k - 1] });
             let p = if k == 0 && coupled {
                 vec![
                     one(n),
-                    block(Weight::Left(g), n),
-                    wrong_c(Weight::Left(g - 1.0)),
+                    block(Basis::SlipEdge, n),
+                    block(Basis::SlipWrongC, 1),
                 ]
             } else {
                 vec![one(n)]
@@ -285,7 +317,7 @@ impl Mesh {
             at(slip_d[slip_d.len() - 1]),
             end,
             false,
-            vec![block(Weight::Right(-g), n)],
+            vec![block(Basis::PunchEdge, n)],
             vec![],
         ));
         let mut offset = 0;
@@ -300,13 +332,12 @@ impl Mesh {
             w,
             panels,
             c_stick,
-            c_slip,
             unknowns: offset,
         })
     }
 
     /// Index of the panel holding the point x of [0, 1).
-    pub fn locate(&self, x: Pt) -> usize {
+    pub(crate) fn locate(&self, x: Pt) -> usize {
         self.panels
             .iter()
             .position(|p| x.minus(p.b) < 0.0)

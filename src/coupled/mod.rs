@@ -31,17 +31,17 @@
 //! 100-350 unknowns at the last); the first solve for a new edge exponent g also builds the
 //! transform families (0.2-0.4 ms per order, then shared); tractions 30-60 ns per point.
 
-pub mod cauchy;
-pub mod mesh;
-pub mod system;
+mod mesh;
+mod system;
 
 #[cfg(test)]
 mod tests;
 
 use crate::error::{Error, Result};
+use crate::numerics::quadrature::gauss_legendre_nodes;
+use crate::numerics::roots::brent;
 use crate::problem::{Coupling, Profile, StickEdge};
 use mesh::{Layout, Pt};
-use std::f64::consts::PI;
 use system::{Constants, Discrete, Families, solve_fixed};
 
 /// Smallest and largest step in t = ln(c / (1 - c)) of the scan for the first root (the
@@ -115,7 +115,7 @@ impl Profile for CoupledSolution {
     fn tractions(&self, x: f64) -> (f64, f64) {
         let ax = x.abs();
         match &self.discrete {
-            None => (1.0 / (PI * ((1.0 - ax) * (1.0 + ax)).sqrt()), 0.0),
+            None => (crate::goodman::p0(ax), 0.0),
             Some(d) => {
                 let (p, q) = d.eval(Pt { x: ax, u: 1.0 - ax });
                 (
@@ -220,7 +220,7 @@ impl<'a> Level<'a> {
     /// xtol in t.
     fn brent(&mut self, a: f64, b: f64, fa: f64, fb: f64) -> Result<f64> {
         let xtol = self.xtol;
-        crate::roots::brent(|t| self.kappa(t), (a, fa), (b, fb), xtol, 100)
+        brent(|t| self.kappa(t), (a, fa), (b, fb), xtol, 100)
     }
 
     /// First sign change of kappa met increasing c from 0 (scanned at order SCAN_ORDER),
@@ -409,7 +409,7 @@ fn traction_gap(d: &Discrete, other: &Discrete) -> f64 {
 
 /// Checks |q| <= mu p (to 1e-6 relative) at the stick panels' Gauss points.
 fn admissible(d: &Discrete, mu: f64) -> bool {
-    let nodes = system::legendre_nodes(7);
+    let nodes = gauss_legendre_nodes(7);
     d.mesh.panels.iter().filter(|p| p.stick).all(|panel| {
         nodes.iter().all(|&t| {
             let x = if panel.central {

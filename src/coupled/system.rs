@@ -8,80 +8,70 @@
 //! Each panel gets OVERSAMPLE times as many collocation points (Gauss-Legendre points of the
 //! panel) as it has unknowns; (E1) with p ~ (1-x)^(-g) has index 1, so (E4) fixes the scale.
 
-use super::cauchy::{Weight, WeightedFamily, legendre};
-use super::mesh::{Block, Layout, Mesh, Panel, Pt};
+use super::mesh::{Basis, Block, Layout, Mesh, Panel, Pt};
 use crate::error::{Error, Result};
-use crate::quadrature::gauss_legendre;
+use crate::numerics::cauchy::WeightedFamily;
+use crate::numerics::orthopoly::{legendre, legendre_sum};
+use crate::numerics::quadrature::gauss_legendre_nodes;
 use faer::Mat;
 use faer::linalg::solvers::SolveLstsq;
 use std::f64::consts::PI;
-use std::sync::OnceLock;
 
 /// Collocation points per unknown: the oversampled system is solved in the least-squares
 /// sense (Householder QR), which keeps the redundant singular-plus-regular bases of the
 /// panels at c from amplifying rounding errors (square collocation loses 3-4 digits in c).
-pub const OVERSAMPLE: f64 = 2.0;
+pub(crate) const OVERSAMPLE: f64 = 2.0;
 
 /// Oversampling for tolerances at kappa's rounding noise: 3 points per unknown lower that
 /// noise 10-50 times at orders >= 8 (measured), for 1.6 times the least-squares work.
-pub const OVERSAMPLE_FINE: f64 = 3.0;
+pub(crate) const OVERSAMPLE_FINE: f64 = 3.0;
 
 /// Problem constants as the system uses them.
 #[derive(Clone, Copy, Debug)]
-pub struct Constants {
+pub(crate) struct Constants {
     /// Coupling of q into (E1).
-    pub bp: f64,
+    pub(crate) bp: f64,
     /// Coupling of p into (E2).
-    pub bq: f64,
+    pub(crate) bq: f64,
     /// Friction coefficient.
-    pub mu: f64,
+    pub(crate) mu: f64,
     /// Edge exponent g = 1/2 - atan(bp mu) / pi.
-    pub g: f64,
+    pub(crate) g: f64,
 }
 
-/// The Cauchy-transform families of every weight the mesh uses, for order n. Built inside
-/// each solve: no cache outlives it, so solves share no mutable state (a process-wide cache
-/// measured 5-10% faster per solve, not worth global state).
+/// The Cauchy-transform families of every basis, for order n, indexed by [`Basis`]: each
+/// basis has its family, so a lookup cannot miss. Built inside each solve: no cache outlives
+/// it, so solves share no mutable state (a process-wide cache measured 5-10% faster per
+/// solve, not worth global state).
 #[derive(Clone, Debug)]
-pub struct Families {
-    fams: Vec<WeightedFamily>,
+pub(crate) struct Families {
+    fams: [WeightedFamily; Basis::ALL.len()],
 }
 
 impl Families {
     /// Families for exponent g and order n (Legendre degrees below n).
-    pub fn new(g: f64, n: usize) -> Self {
-        let weights = [
-            Weight::One,
-            Weight::Right(g),
-            Weight::Right(g - 1.0),
-            Weight::Left(g),
-            Weight::Left(g - 1.0),
-            Weight::Right(-g),
-            Weight::Left(-0.5),
-            Weight::Left(0.5),
-        ];
+    pub(crate) fn new(g: f64, n: usize) -> Self {
         Self {
-            fams: weights.iter().map(|&w| WeightedFamily::new(w, n)).collect(),
+            fams: Basis::ALL.map(|b| WeightedFamily::new(b.weight(g), n)),
         }
     }
 
-    /// The family of weight w.
-    pub fn get(&self, w: Weight) -> &WeightedFamily {
-        self.fams
-            .iter()
-            .find(|f| f.weight == w)
-            .unwrap_or(&self.fams[0])
+    /// The family of a basis.
+    pub(crate) fn get(&self, basis: Basis) -> &WeightedFamily {
+        &self.fams[basis as usize]
     }
 }
 
-/// Values of a block's functions at local coordinate t (with 1 - t, 1 + t given accurately),
-/// written to out[..count]; `leg` is scratch for Legendre values.
-pub fn block_values(b: &Block, t: f64, omt: f64, opt: f64, leg: &mut [f64], out: &mut [f64]) {
-    let w = match b.weight {
-        Weight::One => 1.0,
-        Weight::Right(e) => omt.powf(e),
-        Weight::Left(e) => opt.powf(e),
-    };
+/// Values of a block's functions at local coordinate t (with 1 - t, 1 + t given accurately)
+/// for edge exponent g, written to out[..count]; `leg` is scratch for Legendre values.
+pub(crate) fn block_values(
+    b: &Block,
+    g: f64,
+    (t, omt, opt): (f64, f64, f64),
+    leg: &mut [f64],
+    out: &mut [f64],
+) {
+    let w = b.basis.weight(g).at(omt, opt);
     legendre(t, &mut leg[..b.count]);
     for (o, l) in out[..b.count].iter_mut().zip(leg.iter()) {
         *o = w * l;
@@ -90,17 +80,15 @@ pub fn block_values(b: &Block, t: f64, omt: f64, opt: f64, leg: &mut [f64], out:
 
 /// A solved discretisation at fixed c.
 #[derive(Clone, Debug)]
-pub struct Discrete {
+pub(crate) struct Discrete {
     /// The mesh.
-    pub mesh: Mesh,
+    pub(crate) mesh: Mesh,
     /// Coefficients of all panel bases.
-    pub coef: Vec<f64>,
+    pub(crate) coef: Vec<f64>,
     /// Physical coefficient of q's (c - x)^(g - 1) mode: zero at the physical c.
-    pub kappa: f64,
-    /// Physical coefficient of p's (x - c)^(g - 1) mode on the slip side.
-    pub kappa_p: f64,
+    pub(crate) kappa: f64,
     /// The constants.
-    pub k: Constants,
+    pub(crate) k: Constants,
 }
 
 /// One collocation row: which equation and where.
@@ -118,22 +106,6 @@ fn oversampled(count: usize, oversample: f64) -> usize {
     (oversample * count as f64).ceil() as usize
 }
 
-/// Largest Gauss-Legendre rule kept by [`legendre_nodes`].
-const MAX_RULE: usize = 160;
-
-/// Nodes of the `count`-point Gauss-Legendre rule, computed once per process
-/// (they depend on nothing else); larger rules are computed on each call.
-pub fn legendre_nodes(count: usize) -> std::borrow::Cow<'static, [f64]> {
-    static RULES: [OnceLock<Vec<f64>>; MAX_RULE] = [const { OnceLock::new() }; MAX_RULE];
-    match RULES.get(count) {
-        Some(rule) => rule
-            .get_or_init(|| gauss_legendre(count).0)
-            .as_slice()
-            .into(),
-        None => gauss_legendre(count).0.into(),
-    }
-}
-
 fn rows(mesh: &Mesh, oversample: f64) -> Vec<Row> {
     let mut rows = Vec::with_capacity(mesh.unknowns);
     let last = mesh.panels.len() - 1;
@@ -149,7 +121,7 @@ fn rows(mesh: &Mesh, oversample: f64) -> Vec<Row> {
             if count == 0 {
                 continue;
             }
-            for &t in legendre_nodes(count).iter() {
+            for &t in gauss_legendre_nodes(count).iter() {
                 let x = if p.central {
                     let x = p.h * (0.5 * (1.0 + t)).sqrt();
                     Pt { x, u: 1.0 - x }
@@ -193,9 +165,9 @@ fn add_hilbert(
         let yy = 2.0 * r * r - 1.0;
         let half = q.h * std::f64::consts::FRAC_1_SQRT_2;
         let (fam, factor) = if sign < 0.0 {
-            (fams.get(Weight::Left(-0.5)), x.x / half)
+            (fams.get(Basis::CentralP), x.x / half)
         } else {
-            (fams.get(Weight::Left(0.5)), half)
+            (fams.get(Basis::CentralQ), half)
         };
         for b in blocks {
             fam.cauchy(yy, &mut buf[..b.count]);
@@ -209,7 +181,7 @@ fn add_hilbert(
     let y = x.minus(q.m) / q.h;
     let ym = -(x.x + q.m.x) / q.h;
     for b in blocks {
-        let fam = fams.get(b.weight);
+        let fam = fams.get(b.basis);
         fam.cauchy_pair(y, ym, sign, &mut buf[..b.count], &mut buf2[..b.count]);
         for u in &buf[..b.count] {
             row[col] += scale * u / PI;
@@ -220,7 +192,7 @@ fn add_hilbert(
 
 /// Assembles and solves the system for stick edge (c, w = 1 - c) at order n, with
 /// `oversample` collocation points per unknown.
-pub fn solve_fixed(
+pub(crate) fn solve_fixed(
     k: Constants,
     c: f64,
     w: f64,
@@ -234,10 +206,10 @@ pub fn solve_fixed(
             "coupled: trial stick edge c = {c}, 1 - c = {w} out of range"
         )));
     }
-    let mesh = Mesh::new(c, w, n, k.g, k.bp > 0.0, layout).ok_or_else(|| {
+    let mesh = Mesh::new(c, w, n, k.bp > 0.0, layout).ok_or_else(|| {
         Error::NoConvergence(format!("coupled: panel layout does not fit c = {c}"))
     })?;
-    let nu = mesh.unknowns;
+    let unknowns = mesh.unknowns;
     let rows = rows(&mesh, oversample);
     let nr = rows.len() + 1;
     let deg = n;
@@ -247,8 +219,8 @@ pub fn solve_fixed(
         vec![0.0; deg],
         vec![0.0; deg],
     );
-    let mut a = Mat::<f64>::zeros(nr, nu);
-    let mut r = vec![0.0; nu];
+    let mut a = Mat::<f64>::zeros(nr, unknowns);
+    let mut r = vec![0.0; unknowns];
     for (i, row) in rows.iter().enumerate() {
         r.fill(0.0);
         let own = &mesh.panels[row.panel];
@@ -277,7 +249,7 @@ pub fn solve_fixed(
             (&own.p, own.p_offset, -k.bp * k.mu)
         };
         for b in blocks {
-            block_values(b, row.t, row.omt, row.opt, &mut leg, &mut vals);
+            block_values(b, k.g, (row.t, row.omt, row.opt), &mut leg, &mut vals);
             for v in &vals[..b.count] {
                 r[col] += scale * v;
                 col += 1;
@@ -290,20 +262,17 @@ pub fn solve_fixed(
     }
     // (E4): int_{-1}^{1} p = 1 (weighted row; the solution is rescaled to it exactly below)
     let last = nr - 1;
-    let mut norm = vec![0.0; nu];
+    let mut norm = vec![0.0; unknowns];
     for p in &mesh.panels {
         let mut col = p.p_offset;
         // central: int_{-l}^{l} f(Y) dx = (l^2/2)^(1/2) int (1+Y)^(-1/2) f dY
-        let (factor, weight_of) = if p.central {
-            (
-                p.h * std::f64::consts::FRAC_1_SQRT_2,
-                Some(Weight::Left(-0.5)),
-            )
+        let (factor, central) = if p.central {
+            (p.h * std::f64::consts::FRAC_1_SQRT_2, Some(Basis::CentralP))
         } else {
             (2.0 * p.h, None)
         };
         for b in &p.p {
-            let fam = fams.get(weight_of.unwrap_or(b.weight));
+            let fam = fams.get(central.unwrap_or(b.basis));
             for j in 0..b.count {
                 norm[col] = factor * fam.moment(j);
                 col += 1;
@@ -318,7 +287,7 @@ pub fn solve_fixed(
     let mut rhs = Mat::<f64>::zeros(nr, 1);
     rhs[(last, 0)] = nscale;
     let x = a.col_piv_qr().solve_lstsq(&rhs);
-    let mut coef: Vec<f64> = (0..nu).map(|i| x[(i, 0)]).collect();
+    let mut coef: Vec<f64> = (0..unknowns).map(|i| x[(i, 0)]).collect();
     let mass: f64 = coef.iter().zip(&norm).map(|(c, v)| c * v).sum();
     for v in coef.iter_mut() {
         *v /= mass;
@@ -329,45 +298,13 @@ pub fn solve_fixed(
         )));
     }
     let cs = &mesh.panels[mesh.c_stick];
-    let sl = &mesh.panels[mesh.c_slip];
     let kappa = coef[cs.q_offset + 2 * n] * cs.h.powf(1.0 - k.g);
-    let kappa_p = if k.bp > 0.0 {
-        coef[sl.p_offset + 2 * n] * sl.h.powf(1.0 - k.g)
-    } else {
-        0.0
-    };
     Ok(Discrete {
         mesh,
         coef,
         kappa,
-        kappa_p,
         k,
     })
-}
-
-/// Recurrence factors (2k+1)/(k+1) and k/(k+1) of the Legendre polynomials, k < 64.
-const LEGENDRE_AB: [(f64, f64); 64] = {
-    let mut t = [(0.0, 0.0); 64];
-    let mut k = 0;
-    while k < 64 {
-        let kf = k as f64;
-        t[k] = ((2.0 * kf + 1.0) / (kf + 1.0), kf / (kf + 1.0));
-        k += 1;
-    }
-    t
-};
-
-/// sum_k a_k P_k(t) by the three-term recurrence (no allocation, no division).
-fn legendre_sum(a: &[f64], t: f64) -> f64 {
-    let (mut p_prev, mut p) = (0.0, 1.0);
-    let mut s = 0.0;
-    for (ak, (fa, fb)) in a.iter().zip(LEGENDRE_AB.iter()) {
-        s += ak * p;
-        let next = fa * t * p - fb * p_prev;
-        p_prev = p;
-        p = next;
-    }
-    s
 }
 
 impl Discrete {
@@ -379,11 +316,7 @@ impl Discrete {
         for b in blocks {
             let coef = &self.coef[col..col + b.count];
             col += b.count;
-            let w = match b.weight {
-                Weight::One => 1.0,
-                Weight::Right(e) => omt.powf(e),
-                Weight::Left(e) => opt.powf(e),
-            };
+            let w = b.basis.weight(self.k.g).at(omt, opt);
             if w.is_finite() {
                 s += w * legendre_sum(coef, t);
             }
@@ -392,7 +325,7 @@ impl Discrete {
     }
 
     /// (p, q) at 0 <= x < 1 given as a [`Pt`].
-    pub fn eval(&self, x: Pt) -> (f64, f64) {
+    pub(crate) fn eval(&self, x: Pt) -> (f64, f64) {
         let panel = &self.mesh.panels[self.mesh.locate(x)];
         let (t, omt, opt) = panel.local(x);
         let p = self.series(&panel.p, panel.p_offset, t, omt, opt);

@@ -4,7 +4,8 @@
 //! convergence under refinement.
 
 use super::*;
-use crate::quadrature::{gauss_jacobi, gauss_legendre};
+use crate::numerics::quadrature::{gauss_jacobi, gauss_legendre};
+use std::f64::consts::PI;
 
 /// Isotropic plane strain, nu = 0.3: bp = bq = (1 - 2 nu) / (2 (1 - nu)) (THEORY.md section 2:
 /// A = (1-2nu)(1+nu)/E, B = C = 2(1-nu^2)/(pi E), bp = A / (pi C)).
@@ -216,20 +217,11 @@ fn invalid_input_is_an_error() {
 }
 
 /// bp = 0: p = p0 and c solves K(sqrt(1 - c^2)) / K(c) = bq / mu (Goodman), here by bisection
-/// on ellip::ellipk (parameter m = k^2).
+/// ([`crate::goodman::c_by_bisection`]).
 #[test]
 fn uncoupled_reproduces_goodman() {
     for &(bq, mu) in &[(0.2857142857142857, 0.3), (0.5, 0.2), (0.3, 1.0)] {
-        let ratio = |c: f64| {
-            let kc = ellip::ellipk(c * c).unwrap();
-            let kp = ellip::ellipk((1.0 - c) * (1.0 + c)).unwrap();
-            kp / kc - bq / mu
-        };
-        let (mut lo, mut hi) = (1e-6, 1.0 - 1e-9);
-        for _ in 0..200 {
-            let mid = 0.5 * (lo + hi);
-            if ratio(mid) > 0.0 { lo = mid } else { hi = mid }
-        }
+        let lo = crate::goodman::c_by_bisection(bq / mu);
         let k = Coupling { bp: 0.0, bq, mu };
         let s = solve(&k, 1e-13).unwrap();
         let c = s.edge().c;
@@ -374,4 +366,15 @@ fn friction_extremes() {
     println!("b* 0.45 mu 20: 1 - c = {:.6e}", s.edge().one_minus_c);
     assert!(s.edge().one_minus_c > 1e-6);
     check_solution(&k, &s);
+}
+
+/// Every basis has its own transform family, found by index, with the basis's weight.
+#[test]
+fn families_are_indexed_by_basis() {
+    let g = 0.41;
+    let fams = Families::new(g, 5);
+    for (i, b) in mesh::Basis::ALL.into_iter().enumerate() {
+        assert_eq!(b as usize, i);
+        assert_eq!(fams.get(b).weight, b.weight(g));
+    }
 }

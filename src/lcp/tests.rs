@@ -4,20 +4,10 @@
 //! THEORY.md section 4.
 
 use super::*;
+use crate::goodman::c_by_bisection;
 
 /// Isotropic plane strain, nu = 0.3: bp = bq = (1 - 2 nu) / (2 (1 - nu)).
 const STEEL: f64 = 0.4 / 1.4;
-
-/// Goodman's c: K(sqrt(1 - c^2)) / K(c) = bq / mu (ellip: parameter m = k^2), bisection.
-fn goodman_c(bq: f64, mu: f64) -> f64 {
-    let f = |c: f64| ellip::ellipk(1.0 - c * c).unwrap() / ellip::ellipk(c * c).unwrap();
-    let (mut lo, mut hi) = (1e-300f64, 1.0 - 1e-16);
-    for _ in 0..200 {
-        let mid = 0.5 * (lo + hi);
-        if f(mid) > bq / mu { lo = mid } else { hi = mid }
-    }
-    0.5 * (lo + hi)
-}
 
 /// Carbon/epoxy ply, plane stress (THEORY.md section 2): (bp, bq).
 fn carbon_epoxy() -> (f64, f64) {
@@ -54,7 +44,7 @@ fn goodman_is_reproduced_at_bp_zero_with_first_order_convergence() {
             bq: STEEL,
             mu,
         };
-        let exact = goodman_c(k.bq, mu);
+        let exact = c_by_bisection(k.bq / mu);
         for (w, &n) in worst.iter_mut().zip(&ns) {
             let s = solve(&k, n).unwrap();
             let err = (s.edge().c - exact).abs();
@@ -109,7 +99,7 @@ fn coupled_edge_converges_to_the_richardson_limit_of_its_own_sequence() {
     }
     assert!(errors[3] < errors[0] / 3.0, "{errors:?}");
     // Goodman neglects the coupling: a few 1e-2 above (THEORY.md section 5).
-    let gap = goodman_c(k.bq, k.mu) - reference;
+    let gap = c_by_bisection(k.bq / k.mu) - reference;
     assert!((0.01..0.1).contains(&gap), "Goodman - coupled = {gap}");
 }
 

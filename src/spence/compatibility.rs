@@ -1,4 +1,4 @@
-//! The compatibility condition (COUPLED.md, THEORY.md section 5) for Spence's pressure
+//! The compatibility condition (THEORY.md section 5) for Spence's pressure
 //! p_S = (1 - x^2)^(-g) / B(1/2, 1 - g), with h = 1/2 - g = atan(bp mu) / pi, m = c^2:
 //!   int_0^c (1 - x^2)^(-g) / sqrt(c^2 - x^2) dx = (pi/2) 2F1(g, 1/2; 1; m)        (x = c sqrt(v)),
 //!   int_c^1 (1 - t^2)^(-g) / sqrt(t^2 - c^2) dt
@@ -11,10 +11,9 @@
 
 use std::f64::consts::PI;
 
-use super::hypergeometric::hyp2f1;
 use crate::error::{Error, Result};
-use crate::quadrature::ln_gamma;
-use crate::roots::brent;
+use crate::numerics::roots::brent;
+use crate::numerics::special::{hyp2f1, ln_gamma};
 
 /// m = c^2 and 1 - m with their logarithms, all to full relative accuracy, from s = ln(m/(1-m)).
 #[derive(Clone, Copy, Debug)]

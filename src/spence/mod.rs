@@ -6,7 +6,6 @@
 //! At bp = 0 (g = 1/2) it is Goodman's approximation exactly.
 
 mod compatibility;
-mod hypergeometric;
 mod stick_shear;
 #[cfg(test)]
 mod tests;
@@ -14,8 +13,8 @@ mod tests;
 use std::f64::consts::PI;
 
 use crate::error::{Error, Result};
+use crate::numerics::special::ln_gamma;
 use crate::problem::{Coupling, Profile, StickEdge};
-use crate::quadrature::ln_gamma;
 use compatibility::{Compatibility, Split};
 use stick_shear::StickShear;
 

@@ -1,6 +1,7 @@
-//! Spence's shear traction on the stick zone |x| < c: the bounded inversion of (E2)
-//! (COUPLED.md) for p = N (1 - x^2)^(-g), N = 1 / B(1/2, 1 - g), evaluated in closed form up to
-//! one Stieltjes transform. With m = c^2, m1 = 1 - c^2, y = x^2, and the Stieltjes form
+//! Spence's shear traction on the stick zone |x| < c: the inversion of (E2) bounded at
+//! x = +-c, with q = mu p on the slip zones, for p = N (1 - x^2)^(-g), N = 1 / B(1/2, 1 - g),
+//! evaluated in closed form up to one Stieltjes transform. With m = c^2, m1 = 1 - c^2,
+//! y = x^2, and the Stieltjes form
 //! (1 - t^2)^(-g) = (sin(pi g)/pi) int_1^inf (u - 1)^(-g) / (u - t^2) du, both integrals of
 //! the inversion formula reduce to elementary ones plus one in u, giving for 0 <= x < c
 //!   q(x) = (2/pi) mu p(x) atan(x sqrt(m1) / sqrt(m - y))
@@ -14,6 +15,8 @@
 //! ln(eta) on panels of width <= 2 (Bernstein ellipse radius >= 6.4).
 
 use std::f64::consts::PI;
+
+use crate::numerics::orthopoly::{chebyshev_fit, chebyshev_sum};
 
 /// Trapezoidal step in r = ln(rho): exp(-2 pi 2.5 / h) ~ 3e-21.
 const STEP: f64 = 1.0 / 3.0;
@@ -139,38 +142,7 @@ impl StickShear {
         let t = (ell - self.ell_lo) / self.width;
         let i = (t.floor().max(0.0) as usize).min(self.coef.len() - 1);
         let local = (2.0 * (t - i as f64) - 1.0).clamp(-1.0, 1.0);
-        let s = clenshaw(&self.coef[i], local);
+        let s = chebyshev_sum(&self.coef[i], local);
         2.0 / PI * self.mu * p * (x * self.sqrt_m1).atan2(d) + self.scale * x * d * s
     }
-}
-
-/// Chebyshev coefficients of f on [a, b] from its values at the DEGREE Chebyshev points of the
-/// first kind.
-fn chebyshev_fit(f: impl Fn(f64) -> f64, a: f64, b: f64) -> [f64; DEGREE] {
-    let n = DEGREE as f64;
-    let values: Vec<f64> = (0..DEGREE)
-        .map(|k| {
-            let t = (PI * (k as f64 + 0.5) / n).cos();
-            f(0.5 * (a + b) + 0.5 * (b - a) * t)
-        })
-        .collect();
-    let mut coef = [0.0; DEGREE];
-    for (j, cj) in coef.iter_mut().enumerate() {
-        let s: f64 = values
-            .iter()
-            .enumerate()
-            .map(|(k, v)| v * (PI * j as f64 * (k as f64 + 0.5) / n).cos())
-            .sum();
-        *cj = if j == 0 { s / n } else { 2.0 * s / n };
-    }
-    coef
-}
-
-/// sum_j coef_j T_j(t) by Clenshaw's recurrence.
-fn clenshaw(coef: &[f64; DEGREE], t: f64) -> f64 {
-    let (mut b1, mut b2) = (0.0, 0.0);
-    for &c in coef.iter().skip(1).rev() {
-        (b1, b2) = (2.0 * t * b1 - b2 + c, b1);
-    }
-    t * b1 - b2 + coef[0]
 }

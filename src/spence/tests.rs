@@ -105,56 +105,6 @@ fn compatibility_sides_match_quadrature() {
 }
 
 #[test]
-fn hypergeometric_branches_agree() {
-    // The z -> 1 - z branch against the plain series (slow but convergent) for z in (1/2, 0.8],
-    // and its limit e -> 0 against the logarithmic case.
-    for (a, b, e) in [
-        (0.5, 0.5, 0.0),
-        (0.5, 0.7, 0.0),
-        (0.3, 0.5, 0.2),
-        (0.01, 0.5, 0.49),
-    ] {
-        for z in [0.5, 0.6, 0.8] {
-            let w: f64 = 1.0 - z;
-            let direct = hypergeometric::series(a, b, a + b + e, z);
-            let near = hypergeometric::near_one(a, b, e, w, w.ln());
-            assert!(
-                (near / direct - 1.0).abs() < 1e-14,
-                "{a} {b} {e} {z}: {near} {direct}"
-            );
-        }
-    }
-    let w: f64 = 1e-3;
-    let log_case = hypergeometric::near_one(0.5, 0.5, 0.0, w, w.ln());
-    let nearly = hypergeometric::near_one(0.5 - 1e-10, 0.5, 1e-10, w, w.ln());
-    assert!((nearly / log_case - 1.0).abs() < 1e-9);
-}
-
-#[test]
-fn ln_gamma_slope_matches_digamma_and_differences() {
-    // psi(1) = -Euler gamma, psi(1/2) = -gamma - 2 ln 2.
-    let euler = 0.577_215_664_901_532_9;
-    assert!((hypergeometric::ln_gamma_slope(1.0, 0.0) + euler).abs() < 1e-15);
-    let psi_half = -euler - 2.0 * std::f64::consts::LN_2;
-    assert!((hypergeometric::ln_gamma_slope(0.5, 0.0) - psi_half).abs() < 1e-15);
-    for (x, e) in [(0.5, 0.3), (1.0, -0.4), (0.2, 0.45), (3.7, 0.25)] {
-        let d = (ln_gamma(x + e) - ln_gamma(x)) / e;
-        assert!((hypergeometric::ln_gamma_slope(x, e) - d).abs() < 1e-13);
-    }
-}
-
-/// Goodman's equation K(k')/K(c) = bq/mu by bisection on `ellip::ellipk` (parameter m = k^2).
-fn goodman_by_bisection(ratio: f64) -> f64 {
-    let f = |c: f64| ellip::ellipk((1.0 - c) * (1.0 + c)).unwrap() / ellip::ellipk(c * c).unwrap();
-    let (mut lo, mut hi) = (0.0_f64, 1.0_f64);
-    for _ in 0..200 {
-        let mid = 0.5 * (lo + hi);
-        if f(mid) > ratio { lo = mid } else { hi = mid }
-    }
-    0.5 * (lo + hi)
-}
-
-#[test]
 fn reduces_to_goodman_at_zero_bp() {
     for (bq, mu) in [
         (0.2857, 0.1),
@@ -166,7 +116,7 @@ fn reduces_to_goodman_at_zero_bp() {
         let k = Coupling { bp: 0.0, bq, mu };
         let s = solve(&k).unwrap();
         assert_eq!(s.edge_exponent(), 0.5);
-        let c = goodman_by_bisection(bq / mu);
+        let c = goodman::c_by_bisection(bq / mu);
         let e = s.edge();
         assert!((e.c - c).abs() < 1e-12, "bq {bq} mu {mu}: {} vs {c}", e.c);
         assert!(s.numerical_error() < 1e-13 && s.numerical_error() > 0.0);

@@ -8,7 +8,7 @@ use crate::error::{Error, Result};
 /// located to within `xtol` + 2 eps |x|. f may fail; its error is passed on. Returns the
 /// bracket end with the smaller |f| once the bracket is that narrow (or f vanishes there);
 /// `Error::NoConvergence` after `max_iter` steps.
-pub fn brent(
+pub(crate) fn brent(
     mut f: impl FnMut(f64) -> Result<f64>,
     (mut a, mut fa): (f64, f64),
     (mut b, mut fb): (f64, f64),

@@ -1,0 +1,8 @@
+//! The numerical tools the solvers share, one home each: special functions, orthogonal
+//! polynomials, Gauss quadrature, Cauchy transforms of weighted polynomials and root finding.
+
+pub(crate) mod cauchy;
+pub(crate) mod orthopoly;
+pub(crate) mod quadrature;
+pub(crate) mod roots;
+pub(crate) mod special;

@@ -1,0 +1,269 @@
+//! Special functions: Gamma, ln Gamma, the Beta function, digamma, the difference quotient of
+//! ln Gamma, and the Gauss hypergeometric function 2F1 in the cases the solvers meet.
+//!
+//! Gamma and ln Gamma are libm's `tgamma` and `lgamma`. Measured against mpmath on 4000
+//! points of (1e-3, 170): `tgamma` within 3.7 ulp (the former Stirling-series Gamma here: 12.6)
+//! and `lgamma` within 1.7 ulp of max(1, |ln Gamma|) (former: 12.5), `lgamma` 4 times faster.
+//! Digamma and the ln Gamma quotient use Stirling's series with one coefficient table.
+
+use std::f64::consts::PI;
+
+/// Gamma(x) for 0 < x < 171.6 (libm's `tgamma`).
+pub(crate) fn gamma(x: f64) -> f64 {
+    libm::tgamma(x)
+}
+
+/// ln Gamma(x) for x > 0 (libm's `lgamma`).
+pub(crate) fn ln_gamma(x: f64) -> f64 {
+    libm::lgamma(x)
+}
+
+/// B(a, b) = Gamma(a) Gamma(b) / Gamma(a + b) for a, b > 0 (through ln Gamma once
+/// Gamma(a + b) would overflow).
+pub(crate) fn beta(a: f64, b: f64) -> f64 {
+    if a + b < 170.0 {
+        gamma(a) / gamma(a + b) * gamma(b)
+    } else {
+        (ln_gamma(a) + ln_gamma(b) - ln_gamma(a + b)).exp()
+    }
+}
+
+/// B_2k / (2k (2k - 1)), k = 1..8: Stirling's series
+/// ln Gamma(y) = (y - 1/2) ln y - y + ln(2 pi) / 2 + sum_k STIRLING[k-1] y^(1 - 2k)
+/// (DLMF 5.11.1), and psi(y) = ln y - 1/(2y) - sum_k (2k - 1) STIRLING[k-1] y^(-2k) (5.11.2).
+const STIRLING: [f64; 8] = [
+    1.0 / 12.0,
+    -1.0 / 360.0,
+    1.0 / 1260.0,
+    -1.0 / 1680.0,
+    1.0 / 1188.0,
+    -691.0 / 360_360.0,
+    1.0 / 156.0,
+    -3617.0 / 122_400.0,
+];
+
+/// The series are used from here on (the upward recurrence gets there first): the first
+/// term left out, B_18 / (18 * 17) y^-17, is below 2e-18.
+const STIRLING_FROM: f64 = 10.0;
+
+/// Digamma psi(x) = Gamma'(x) / Gamma(x) for x > 0: psi(x + 1) = psi(x) + 1/x up to
+/// y >= 10, then DLMF 5.11.2 (within 5 ulp of max(1, |psi|) against mpmath on (1e-3, 170)).
+pub(crate) fn digamma(x: f64) -> f64 {
+    let mut y = x;
+    let mut shift = 0.0;
+    while y < STIRLING_FROM {
+        shift -= 1.0 / y;
+        y += 1.0;
+    }
+    let r2 = 1.0 / (y * y);
+    let (mut series, mut power) = (0.0, r2);
+    for (k, ck) in STIRLING.iter().enumerate() {
+        series += ck * (2 * k + 1) as f64 * power;
+        power *= r2;
+    }
+    shift + y.ln() - 0.5 / y - series
+}
+
+/// ln(1 + e/x) / e, with its limit 1/x at e = 0.
+fn log_slope(x: f64, e: f64) -> f64 {
+    if e == 0.0 {
+        1.0 / x
+    } else {
+        (e / x).ln_1p() / e
+    }
+}
+
+/// (e^t - 1) / t, with its limit 1 at t = 0.
+fn exprel(t: f64) -> f64 {
+    if t == 0.0 { 1.0 } else { t.exp_m1() / t }
+}
+
+/// [ln Gamma(x + e) - ln Gamma(x)] / e for x > 0, x + e > 0 ([`digamma`] at e = 0), to a few
+/// ulps for every e: recurrence up to x >= 10, then the difference of two Stirling series with
+/// every difference written as ln_1p / exp_m1 of e / x.
+pub(crate) fn ln_gamma_slope(x: f64, e: f64) -> f64 {
+    if e == 0.0 {
+        return digamma(x);
+    }
+    let mut shift = 0.0;
+    let mut y = x;
+    while y < STIRLING_FROM {
+        shift -= log_slope(y, e);
+        y += 1.0;
+    }
+    let l = (e / y).ln_1p();
+    let ls = log_slope(y, e);
+    // (y + e - 1/2) ln(y + e) - (y - 1/2) ln y - e, divided by e.
+    let mut d = (y - 0.5) * ls + (y + e).ln() - 1.0;
+    let mut yp = 1.0 / y;
+    for (k, ck) in STIRLING.iter().enumerate() {
+        let j = -((2 * k + 1) as f64);
+        d += ck * yp * j * ls * exprel(j * l);
+        yp /= y * y;
+    }
+    d + shift
+}
+
+/// Largest number of hypergeometric series terms; |z| <= 1/2 needs about 60.
+const MAX_TERMS: usize = 400;
+
+/// The power series of 2F1(a, b; c; z) for |z| <= 1/2 (DLMF 15.2.1).
+pub(crate) fn hyp2f1_series(a: f64, b: f64, c: f64, z: f64) -> f64 {
+    let (mut term, mut sum) = (1.0, 1.0);
+    for n in 0..MAX_TERMS {
+        let n = n as f64;
+        term *= (a + n) * (b + n) / ((c + n) * (n + 1.0)) * z;
+        sum += term;
+        if term.abs() <= 0.5 * f64::EPSILON * sum.abs() {
+            break;
+        }
+    }
+    sum
+}
+
+/// 2F1(a, b; a + b + e; 1 - w) for a, b > 0, 0 <= e < 1 and |w| <= 1/2, given ln|w|
+/// separately (w may underflow); w < 0 (z > 1) only for e = 0, where it gives the real part
+/// of the continuation (the mean of its values above and below the cut). DLMF 15.8.4 with
+/// c = a + b + e, summed term by term:
+///   2F1 = Gamma(c) / (Gamma(a + e) Gamma(b + e) Gamma(1 - e)) (pi e / sin(pi e))
+///         sum_n r_n w^n (-D_n) exprel(e D_n),
+///   r_n = (a)_n (b)_n / (n! (1 - e)_n),
+///   D_n = [ln Gamma(a+n+e) - ln Gamma(a+n) + ln Gamma(b+n+e) - ln Gamma(b+n)
+///          - ln Gamma(n+1+e) + ln Gamma(n+1-e)] / e + ln w,
+/// which at e = 0 is DLMF 15.8.10 (D_n = psi(a+n) + psi(b+n) - 2 psi(n+1) + ln w), so it goes
+/// over into the logarithmic case without cancellation between the two terms of 15.8.4.
+pub(crate) fn hyp2f1_near_one(a: f64, b: f64, e: f64, w: f64, ln_w: f64) -> f64 {
+    debug_assert!(w >= 0.0 || e == 0.0, "z > 1 only in the logarithmic case");
+    let c = a + b + e;
+    let prefactor = (ln_gamma(c) - ln_gamma(a + e) - ln_gamma(b + e) - ln_gamma(1.0 - e)).exp();
+    let reflection = if e == 0.0 {
+        1.0
+    } else {
+        PI * e / (PI * e).sin()
+    };
+    let mut da = ln_gamma_slope(a, e);
+    let mut db = ln_gamma_slope(b, e);
+    // [ln Gamma(n + 1 + e) - ln Gamma(n + 1 - e)] / (2 e)
+    let mut dn = ln_gamma_slope(1.0 - e, 2.0 * e);
+    let (mut r, mut wn, mut sum) = (1.0, 1.0, 0.0);
+    for n in 0..MAX_TERMS {
+        let d = da + db - 2.0 * dn + ln_w;
+        let term = -r * wn * d * exprel(e * d);
+        sum += term;
+        let nf = n as f64;
+        wn *= w;
+        if wn == 0.0 || (n > 0 && term.abs() <= 0.5 * f64::EPSILON * sum.abs()) {
+            break;
+        }
+        da += log_slope(a + nf, e);
+        db += log_slope(b + nf, e);
+        dn += log_slope(nf + 1.0 - e, 2.0 * e);
+        r *= (a + nf) * (b + nf) / ((nf + 1.0) * (nf + 1.0 - e));
+    }
+    prefactor * reflection * sum
+}
+
+/// 2F1(a, b; a + b + e; z) for a, b > 0, 0 <= e < 1 and -1/2 <= z < 1 (also 1 < z <= 3/2 when
+/// e = 0: the real part, see [`hyp2f1_near_one`]), given z, 1 - z and ln|1 - z| to full
+/// relative accuracy.
+pub(crate) fn hyp2f1(a: f64, b: f64, e: f64, z: f64, one_minus_z: f64, ln_one_minus_z: f64) -> f64 {
+    if z <= 0.5 {
+        hyp2f1_series(a, b, a + b + e, z)
+    } else {
+        hyp2f1_near_one(a, b, e, one_minus_z, ln_one_minus_z)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn rel(a: f64, b: f64) -> f64 {
+        (a - b).abs() / b.abs()
+    }
+
+    const EULER: f64 = 0.577_215_664_901_532_9;
+
+    #[test]
+    fn gamma_known_values() {
+        assert!(rel(ln_gamma(0.5), 0.5 * PI.ln()) < 1e-14);
+        assert!(rel(ln_gamma(5.0).exp(), 24.0) < 1e-14);
+        assert!(rel(ln_gamma(1.0 / 3.0).exp(), 2.678_938_534_707_747_6) < 1e-14);
+        assert!(rel(ln_gamma(0.01).exp(), 99.432_585_119_150_6) < 1e-14);
+        assert!(rel(ln_gamma(100.0), 359.134_205_369_575_4) < 1e-15);
+        assert!(rel(ln_gamma(300.0), 1_409.202_067_470_411_8) < 1e-15);
+        assert!(rel(gamma(2.0), 1.0) < 3e-16 && rel(gamma(1.0), 1.0) < 3e-16);
+        assert!(rel(gamma(30.5), 4.822_696_933_490_909e31) < 1e-14);
+        // B(1/2, 1/2) = pi, B(2, 3) = 1/12, and the large-argument branch.
+        assert!(rel(beta(0.5, 0.5), PI) < 1e-15);
+        assert!(rel(beta(2.0, 3.0), 1.0 / 12.0) < 1e-15);
+        let big = (ln_gamma(150.0) + ln_gamma(60.5) - ln_gamma(210.5)).exp();
+        assert!(rel(beta(150.0, 60.5), big) < 1e-12);
+    }
+
+    #[test]
+    fn digamma_values() {
+        // psi(1) = -gamma, psi(1/2) = -gamma - 2 ln 2, psi(0.1) and psi(100) (mpmath).
+        assert!((digamma(1.0) + EULER).abs() < 1e-15);
+        let psi_half = -EULER - 2.0 * std::f64::consts::LN_2;
+        assert!((digamma(0.5) - psi_half).abs() < 1e-15);
+        assert!((digamma(0.1) + 10.423_754_940_411_076).abs() < 1e-13);
+        assert!(rel(digamma(100.0), 4.600_161_852_738_087) < 1e-15);
+    }
+
+    #[test]
+    fn ln_gamma_slope_matches_digamma_and_differences() {
+        assert_eq!(ln_gamma_slope(0.7, 0.0), digamma(0.7));
+        for (x, e) in [(0.5, 0.3), (1.0, -0.4), (0.2, 0.45), (3.7, 0.25)] {
+            let d = (ln_gamma(x + e) - ln_gamma(x)) / e;
+            assert!((ln_gamma_slope(x, e) - d).abs() < 1e-13);
+        }
+        // tiny e: the quotient tends to psi(x) without cancellation
+        assert!((ln_gamma_slope(2.5, 1e-12) - digamma(2.5)).abs() < 1e-11);
+    }
+
+    #[test]
+    fn hypergeometric_branches_agree() {
+        // The z -> 1 - z branch against the plain series (slow but convergent) for z in
+        // (1/2, 0.8], and its limit e -> 0 against the logarithmic case.
+        for (a, b, e) in [
+            (0.5, 0.5, 0.0),
+            (0.5, 0.7, 0.0),
+            (0.3, 0.5, 0.2),
+            (0.01, 0.5, 0.49),
+        ] {
+            for z in [0.5, 0.6, 0.8] {
+                let w: f64 = 1.0 - z;
+                let direct = hyp2f1_series(a, b, a + b + e, z);
+                let near = hyp2f1_near_one(a, b, e, w, w.ln());
+                assert!(
+                    (near / direct - 1.0).abs() < 1e-14,
+                    "{a} {b} {e} {z}: {near} {direct}"
+                );
+            }
+        }
+        let w: f64 = 1e-3;
+        let log_case = hyp2f1_near_one(0.5, 0.5, 0.0, w, w.ln());
+        let nearly = hyp2f1_near_one(0.5 - 1e-10, 0.5, 1e-10, w, w.ln());
+        assert!((nearly / log_case - 1.0).abs() < 1e-9);
+    }
+
+    /// 2F1(1, a; 1 + a; z) = a sum z^k / (a + k) (DLMF 15.2.1 with (1)_k = k!), and for z > 1
+    /// the real part of the continuation against mpmath (`hyp2f1(1, 0.37, 1.37, z +- 1e-25j)`,
+    /// 30 digits; equal from both sides).
+    #[test]
+    fn logarithmic_case_beyond_one() {
+        let a: f64 = 0.37;
+        for z in [-0.45f64, 0.3] {
+            let direct: f64 = (0..400).map(|k| a * z.powi(k) / (a + k as f64)).sum();
+            assert!(rel(hyp2f1(1.0, a, 0.0, z, 1.0 - z, (1.0 - z).ln()), direct) < 1e-15);
+        }
+        for (z, mpmath) in [
+            (1.2f64, 1.364_193_525_079_932_5),
+            (1.45, 1.050_824_553_167_441_4),
+        ] {
+            let ours = hyp2f1(1.0, a, 0.0, z, 1.0 - z, (z - 1.0).ln());
+            assert!(rel(ours, mpmath) < 1e-14, "z {z}: {ours} vs {mpmath}");
+        }
+    }
+}
