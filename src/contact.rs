@@ -3,7 +3,7 @@
 use crate::error::{Error, Result};
 use crate::material::Material;
 use crate::model_error::{self, Approximation};
-use crate::problem::{Coupling, Profile, StickEdge};
+use crate::problem::{Coupling, Profile, StickEdge, validate_tolerance};
 use crate::{coupled, goodman, lcp, spence};
 
 /// Solution methods; the discriminants are the C ABI's `orthoslip_method` values.
@@ -78,11 +78,7 @@ impl Contact {
 
     /// Sets the target for |c - c_exact| (finite, 0 < tol < 1).
     pub fn set_tolerance(&mut self, tol: f64) -> Result<()> {
-        if !(tol.is_finite() && tol > 0.0 && tol < 1.0) {
-            return Err(Error::InvalidArgument(format!(
-                "tolerance {tol} must be finite with 0 < tol < 1"
-            )));
-        }
+        validate_tolerance(tol)?;
         self.tolerance = tol;
         Ok(())
     }
@@ -113,7 +109,11 @@ impl Contact {
             _ => 0.0,
         };
         let c_error = profile.numerical_error() + model;
-        Ok(Solution::new(method, k, profile, c_error))
+        Ok(Solution {
+            method,
+            profile,
+            c_error,
+        })
     }
 
     /// AUTO's choice: Goodman if its certified model error (the table of
@@ -138,21 +138,11 @@ fn model_bound(a: Approximation, k: &Coupling) -> f64 {
 #[derive(Debug)]
 pub struct Solution {
     method: Method,
-    coupling: Coupling,
     profile: Box<dyn Profile>,
     c_error: f64,
 }
 
 impl Solution {
-    fn new(method: Method, coupling: Coupling, profile: Box<dyn Profile>, c_error: f64) -> Self {
-        Self {
-            method,
-            coupling,
-            profile,
-            c_error,
-        }
-    }
-
     /// The method that produced this solution (never [`Method::Auto`]).
     pub fn method(&self) -> Method {
         self.method
@@ -182,25 +172,13 @@ impl Solution {
 
     /// The coupling constants (bp, bq, mu) solved for.
     pub fn coupling(&self) -> Coupling {
-        self.coupling
+        self.profile.coupling()
     }
 
     /// Dimensionless tractions (p(x), q(x)) per P/a at x in units of the punch half-width:
     /// zero outside the punch, +infinity (q: +-infinity, or 0 when mu = 0) at the punch
     /// edges x = +-1 where p ~ (1 - |x|)^(-g). x must not be NaN.
     pub fn tractions(&self, x: f64) -> (f64, f64) {
-        let ax = x.abs();
-        if ax > 1.0 {
-            (0.0, 0.0)
-        } else if ax == 1.0 {
-            let q = if self.coupling.mu == 0.0 {
-                0.0
-            } else {
-                f64::INFINITY.copysign(x)
-            };
-            (f64::INFINITY, q)
-        } else {
-            self.profile.tractions(x)
-        }
+        self.profile.tractions(x)
     }
 }

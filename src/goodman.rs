@@ -54,8 +54,7 @@ pub fn stick_edge(ratio: f64) -> StickEdge {
 /// Goodman's solution for one coupling (bp is ignored by the model).
 #[derive(Clone, Debug)]
 pub struct GoodmanSolution {
-    bq: f64,
-    mu: f64,
+    coupling: Coupling,
     edge: StickEdge,
     /// c^2 and 1 - c^2, kept to full relative accuracy.
     c2: f64,
@@ -64,14 +63,10 @@ pub struct GoodmanSolution {
     kk: f64,
 }
 
-/// Solves Goodman's approximation. mu = 0 gives c = 0, q = 0.
+/// Solves Goodman's approximation (the coupling must pass [`Coupling::validate`]). mu = 0
+/// gives c = 0, q = 0.
 pub fn solve(k: &Coupling) -> Result<GoodmanSolution> {
-    if !(k.bq > 0.0 && k.bq.is_finite() && k.mu >= 0.0 && k.mu.is_finite()) {
-        return Err(Error::InvalidArgument(format!(
-            "Goodman needs bq > 0 and mu >= 0, finite (bq = {}, mu = {})",
-            k.bq, k.mu
-        )));
-    }
+    k.validate()?;
     let edge = if k.mu == 0.0 {
         StickEdge::from_c(0.0)
     } else {
@@ -85,8 +80,7 @@ pub fn solve(k: &Coupling) -> Result<GoodmanSolution> {
         f64::INFINITY
     };
     Ok(GoodmanSolution {
-        bq: k.bq,
-        mu: k.mu,
+        coupling: *k,
         edge,
         c2,
         k2,
@@ -95,7 +89,7 @@ pub fn solve(k: &Coupling) -> Result<GoodmanSolution> {
 }
 
 /// The pressure of a flat punch without shear coupling, p0 = 1 / (pi sqrt(1 - x^2)).
-pub fn p0(x: f64) -> f64 {
+pub(crate) fn p0(x: f64) -> f64 {
     1.0 / (PI * ((1.0 - x) * (1.0 + x)).sqrt())
 }
 
@@ -112,11 +106,16 @@ impl GoodmanSolution {
         let n = self.k2 / w;
         let j2 =
             (self.kk + n / 3.0 * elliprj(0.0, self.c2, 1.0, d2 / w).unwrap_or(f64::NAN)) / (PI * w);
-        2.0 * x / PI * d2.sqrt() * (self.mu * j2 - self.bq * j1)
+        let k = &self.coupling;
+        2.0 * x / PI * d2.sqrt() * (k.mu * j2 - k.bq * j1)
     }
 }
 
 impl Profile for GoodmanSolution {
+    fn coupling(&self) -> Coupling {
+        self.coupling
+    }
+
     fn edge(&self) -> StickEdge {
         self.edge
     }
@@ -126,17 +125,17 @@ impl Profile for GoodmanSolution {
         8.0 * f64::EPSILON * self.edge.c.max(f64::MIN_POSITIVE)
     }
 
-    fn tractions(&self, x: f64) -> (f64, f64) {
+    fn half_line_tractions(&self, x: f64) -> (f64, f64) {
         let p = p0(x);
-        let ax = x.abs();
-        let q = if self.mu == 0.0 {
+        let mu = self.coupling.mu;
+        let q = if mu == 0.0 {
             0.0
-        } else if ax < self.edge.c {
-            self.q_stick(ax)
+        } else if x < self.edge.c {
+            self.q_stick(x)
         } else {
-            self.mu * p
+            mu * p
         };
-        (p, if x < 0.0 { -q } else { q })
+        (p, q)
     }
 }
 

@@ -9,6 +9,8 @@
 //! Substituting q = delta q~ with delta = sqrt(bq / bp) gives the same problem with
 //! bp = bq = b* = sqrt(bp bq) and friction mu~ = mu / delta (THEORY.md section 4).
 
+use crate::error::{Error, Result};
+
 /// The three numbers that fix the solution: coupling constants and friction coefficient.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Coupling {
@@ -21,6 +23,25 @@ pub struct Coupling {
 }
 
 impl Coupling {
+    /// Checks the ranges every method relies on: bp >= 0, bq > 0, mu >= 0, all finite, and
+    /// b* = sqrt(bp bq) < 1 (as for every admissible material, THEORY.md section 4).
+    pub fn validate(&self) -> Result<()> {
+        let finite = self.bp.is_finite() && self.bq.is_finite() && self.mu.is_finite();
+        if !(finite && self.bp >= 0.0 && self.bq > 0.0 && self.mu >= 0.0) {
+            return Err(Error::InvalidArgument(format!(
+                "coupling needs finite bp >= 0, bq > 0 and mu >= 0 (bp = {}, bq = {}, mu = {})",
+                self.bp, self.bq, self.mu
+            )));
+        }
+        if self.b_star() >= 1.0 {
+            return Err(Error::InvalidArgument(format!(
+                "b* = sqrt(bp bq) = {} must be < 1",
+                self.b_star()
+            )));
+        }
+        Ok(())
+    }
+
     /// b* = sqrt(bp bq), in [0, 1) for admissible materials.
     pub fn b_star(&self) -> f64 {
         (self.bp * self.bq).sqrt()
@@ -77,15 +98,117 @@ impl StickEdge {
     }
 }
 
-/// What every method hands back: the stick edge, its own numerical error estimate and the
-/// traction profile.
+/// Checks a tolerance on |c - c_exact|: finite, 0 < tol < 1.
+pub(crate) fn validate_tolerance(tol: f64) -> Result<()> {
+    if tol.is_finite() && tol > 0.0 && tol < 1.0 {
+        Ok(())
+    } else {
+        Err(Error::InvalidArgument(format!(
+            "tolerance {tol} must be finite with 0 < tol < 1"
+        )))
+    }
+}
+
+/// What every method hands back: the coupling it solved, the stick edge, its own numerical
+/// error estimate and the traction profile on the half-line; the whole line follows from the
+/// symmetry (p even, q odd) in the provided [`Profile::tractions`].
 pub trait Profile: std::fmt::Debug + Send + Sync {
+    /// The coupling solved.
+    fn coupling(&self) -> Coupling;
     /// The stick-zone edge.
     fn edge(&self) -> StickEdge;
     /// The method's own a-posteriori estimate of |c - c*| where c* is the exact solution
     /// of the equations the method solves (discretisation, iteration and rounding error;
     /// ~1e-15 for closed forms). An approximation's model error is accounted separately.
     fn numerical_error(&self) -> f64;
-    /// (p(x), q(x)) for -1 < x < 1; the caller handles |x| >= 1.
-    fn tractions(&self, x: f64) -> (f64, f64);
+    /// (p(x), q(x)) for 0 <= x < 1.
+    fn half_line_tractions(&self, x: f64) -> (f64, f64);
+
+    /// Dimensionless tractions (p(x), q(x)) per P/a at any x (not NaN) in units of the punch
+    /// half-width: p even and q odd (q(0) = 0), zero outside the punch, p = +infinity and
+    /// q = +-infinity (0 when mu = 0) at the punch edges x = +-1 where p ~ (1 - |x|)^(-g).
+    fn tractions(&self, x: f64) -> (f64, f64) {
+        let ax = x.abs();
+        if ax > 1.0 {
+            (0.0, 0.0)
+        } else if ax == 1.0 {
+            let q = if self.coupling().mu == 0.0 {
+                0.0
+            } else {
+                f64::INFINITY.copysign(x)
+            };
+            (f64::INFINITY, q)
+        } else {
+            let (p, q) = self.half_line_tractions(ax);
+            let q = if x > 0.0 {
+                q
+            } else if x < 0.0 {
+                -q
+            } else {
+                0.0
+            };
+            (p, q)
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{coupled, goodman, lcp, spence};
+
+    /// Every method applies the same rules (b* >= 1 was once accepted by Spence and Goodman).
+    #[test]
+    fn one_validation_for_every_method() {
+        let invalid = |r: Result<()>| matches!(r, Err(Error::InvalidArgument(_)));
+        for (bp, bq, mu) in [
+            (-0.1, 0.3, 0.3),
+            (0.3, 0.0, 0.3),
+            (0.3, 0.3, -1.0),
+            (f64::NAN, 0.3, 0.3),
+            (0.3, f64::INFINITY, 0.3),
+            (1.2, 0.9, 0.3),
+        ] {
+            let k = Coupling { bp, bq, mu };
+            assert!(invalid(k.validate()), "{k:?}");
+            assert!(invalid(goodman::solve(&k).map(|_| ())), "Goodman {k:?}");
+            assert!(invalid(spence::solve(&k).map(|_| ())), "Spence {k:?}");
+            assert!(
+                invalid(coupled::solve(&k, 1e-8).map(|_| ())),
+                "COUPLED {k:?}"
+            );
+            assert!(invalid(lcp::solve(&k, 100).map(|_| ())), "LCP {k:?}");
+        }
+        let fine = Coupling {
+            bp: 0.0,
+            bq: 0.99,
+            mu: 0.0,
+        };
+        assert!(fine.validate().is_ok());
+        for tol in [0.0, -1e-3, 1.0, f64::NAN, f64::INFINITY] {
+            assert!(invalid(validate_tolerance(tol)), "tolerance {tol}");
+        }
+    }
+
+    /// The whole line from the half-line: p even, q odd with q(0) = 0, zero outside, infinite
+    /// at the edges (q = 0 there without friction).
+    #[test]
+    fn symmetry_and_edges_are_applied_once() {
+        let k = Coupling {
+            bp: 0.2,
+            bq: 0.3,
+            mu: 0.4,
+        };
+        let s = goodman::solve(&k).unwrap();
+        for x in [0.1, 0.5, 0.99] {
+            let ((p, q), (pm, qm)) = (s.tractions(x), s.tractions(-x));
+            assert_eq!((p, q), s.half_line_tractions(x));
+            assert_eq!((pm, qm), (p, -q));
+        }
+        assert_eq!(s.tractions(0.0).1, 0.0);
+        assert_eq!(s.tractions(-1.5), (0.0, 0.0));
+        assert_eq!(s.tractions(-1.0), (f64::INFINITY, f64::NEG_INFINITY));
+        let frictionless = goodman::solve(&Coupling { mu: 0.0, ..k }).unwrap();
+        assert_eq!(frictionless.tractions(1.0), (f64::INFINITY, 0.0));
+    }
 }

@@ -40,7 +40,7 @@ mod tests;
 use crate::error::{Error, Result};
 use crate::numerics::quadrature::gauss_legendre_nodes;
 use crate::numerics::roots::brent;
-use crate::problem::{Coupling, Profile, StickEdge};
+use crate::problem::{Coupling, Profile, StickEdge, validate_tolerance};
 use mesh::{Layout, Pt};
 use system::{Constants, Discrete, Families, solve_fixed};
 
@@ -80,6 +80,7 @@ const ORDERS: [usize; 8] = [6, 8, 11, 13, 16, 19, 22, 26];
 /// The coupled solution: stick edge, error estimate and the discretised tractions.
 #[derive(Clone, Debug)]
 pub struct CoupledSolution {
+    coupling: Coupling,
     edge: StickEdge,
     error: f64,
     /// q = delta q~ (1 when bp = 0).
@@ -103,6 +104,10 @@ impl CoupledSolution {
 }
 
 impl Profile for CoupledSolution {
+    fn coupling(&self) -> Coupling {
+        self.coupling
+    }
+
     fn edge(&self) -> StickEdge {
         self.edge
     }
@@ -111,21 +116,13 @@ impl Profile for CoupledSolution {
         self.error
     }
 
-    /// (p, q) at -1 < x < 1: one panel lookup and two short Legendre sums.
-    fn tractions(&self, x: f64) -> (f64, f64) {
-        let ax = x.abs();
+    /// (p, q) at 0 <= x < 1: one panel lookup and two short Legendre sums.
+    fn half_line_tractions(&self, x: f64) -> (f64, f64) {
         match &self.discrete {
-            None => (crate::goodman::p0(ax), 0.0),
+            None => (crate::goodman::p0(x), 0.0),
             Some(d) => {
-                let (p, q) = d.eval(Pt { x: ax, u: 1.0 - ax });
-                (
-                    p,
-                    if x < 0.0 {
-                        -self.delta * q
-                    } else {
-                        self.delta * q
-                    },
-                )
+                let (p, q) = d.eval(Pt { x, u: 1.0 - x });
+                (p, self.delta * q)
             }
         }
     }
@@ -425,25 +422,11 @@ fn admissible(d: &Discrete, mu: f64) -> bool {
 
 /// Solves (E1)-(E4) for `k` to |c - c_exact| <= tol (see the module documentation).
 pub fn solve(k: &Coupling, tol: f64) -> Result<CoupledSolution> {
-    let ok = |v: f64| v.is_finite() && v >= 0.0;
-    if !(ok(k.bp) && ok(k.bq) && ok(k.mu) && k.bq > 0.0) {
-        return Err(Error::InvalidArgument(format!(
-            "coupled: need finite bp >= 0, bq > 0, mu >= 0 (got {k:?})"
-        )));
-    }
-    if tol.is_nan() || tol <= 0.0 {
-        return Err(Error::InvalidArgument(format!(
-            "coupled: tolerance {tol} must be > 0"
-        )));
-    }
-    if k.b_star() >= 1.0 {
-        return Err(Error::InvalidArgument(format!(
-            "coupled: b* = {} must be < 1",
-            k.b_star()
-        )));
-    }
+    k.validate()?;
+    validate_tolerance(tol)?;
     if k.mu == 0.0 {
         return Ok(CoupledSolution {
+            coupling: *k,
             edge: StickEdge {
                 c: 0.0,
                 one_minus_c: 1.0,
@@ -517,6 +500,7 @@ pub fn solve(k: &Coupling, tol: f64) -> Result<CoupledSolution> {
                 StickEdge::from_one_minus_c(w)
             };
             return Ok(CoupledSolution {
+                coupling: *k,
                 edge,
                 error: diff,
                 delta,

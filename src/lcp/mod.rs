@@ -23,7 +23,7 @@ mod smoothing_newton;
 mod stick_edge;
 
 use crate::error::{Error, Result};
-use crate::problem::{Coupling, Profile, StickEdge};
+use crate::problem::{Coupling, Profile, StickEdge, validate_tolerance};
 use discretisation::Grid;
 use smoothing_newton::Controls;
 
@@ -58,22 +58,6 @@ const WARM_SMOOTHING: f64 = 1e-3;
 const COMPLEMENTARITY_TOL: f64 = 1e-12;
 /// Newton iteration cap per grid.
 const MAX_NEWTON: usize = 100;
-
-fn validate(k: &Coupling) -> Result<()> {
-    let ok = |v: f64| v.is_finite() && v >= 0.0;
-    if !(ok(k.bp) && ok(k.mu) && k.bq.is_finite() && k.bq > 0.0) {
-        return Err(Error::InvalidArgument(format!(
-            "need finite bp >= 0, bq > 0, mu >= 0 (got {k:?})"
-        )));
-    }
-    if k.b_star() >= 1.0 {
-        return Err(Error::InvalidArgument(format!(
-            "b* = sqrt(bp bq) = {} must be < 1",
-            k.b_star()
-        )));
-    }
-    Ok(())
-}
 
 fn controls(eps0: f64) -> Controls {
     Controls {
@@ -171,7 +155,7 @@ struct Ladder {
 
 impl Ladder {
     fn new(k: &Coupling) -> Result<Self> {
-        validate(k)?;
+        k.validate()?;
         Ok(Self {
             coupling: *k,
             finest: None,
@@ -231,11 +215,7 @@ pub fn solve(k: &Coupling, n: usize) -> Result<LcpSolution> {
 /// n = 100, on) is <= `tol`, up to `MAX_PANELS` = 1600 panels per half-width (2-3 s
 /// measured on 2 shared cores); otherwise `Error::ToleranceNotMet` with the estimate reached.
 pub fn solve_to_tolerance(k: &Coupling, tol: f64) -> Result<LcpSolution> {
-    if tol.is_nan() || tol <= 0.0 {
-        return Err(Error::InvalidArgument(format!(
-            "tolerance {tol} must be > 0"
-        )));
-    }
+    validate_tolerance(tol)?;
     let mut ladder = Ladder::new(k)?;
     let mut n = COARSEST;
     loop {
@@ -302,6 +282,9 @@ impl LcpSolution {
 }
 
 impl Profile for LcpSolution {
+    fn coupling(&self) -> Coupling {
+        self.coupling
+    }
     fn edge(&self) -> StickEdge {
         self.edge
     }
@@ -309,10 +292,10 @@ impl Profile for LcpSolution {
         self.error
     }
     /// Linear interpolation of the regular parts p / w, q / w between midpoints, with
-    /// w = (1 - |x|)^(-g) the edge weight (panel values divided by the panel average of w).
-    fn tractions(&self, x: f64) -> (f64, f64) {
+    /// w = (1 - x)^(-g) the edge weight (panel values divided by the panel average of w).
+    fn half_line_tractions(&self, x: f64) -> (f64, f64) {
         let n = self.grid.n;
-        let t = x.abs().min(1.0 - f64::EPSILON);
+        let t = x.min(1.0 - f64::EPSILON);
         let u = t / self.grid.h - 0.5;
         let j = (u.floor().max(0.0) as usize).min(n - 2);
         let theta = (u - j as f64).clamp(0.0, 1.0);
@@ -323,7 +306,7 @@ impl Profile for LcpSolution {
         let w = (1.0 - t).powf(-self.coupling.edge_exponent());
         // q is odd: below the first midpoint, interpolate linearly to q(0) = 0.
         let q_ramp = (t / self.grid.mid(0)).min(1.0);
-        (w * reg(&self.p), x.signum() * q_ramp * w * reg(&self.q))
+        (w * reg(&self.p), q_ramp * w * reg(&self.q))
     }
 }
 

@@ -12,7 +12,7 @@ mod tests;
 
 use std::f64::consts::PI;
 
-use crate::error::{Error, Result};
+use crate::error::Result;
 use crate::numerics::special::ln_gamma;
 use crate::problem::{Coupling, Profile, StickEdge};
 use compatibility::{Compatibility, Split};
@@ -21,7 +21,7 @@ use stick_shear::StickShear;
 /// Spence's solution for one coupling.
 #[derive(Clone, Debug)]
 pub struct SpenceSolution {
-    mu: f64,
+    coupling: Coupling,
     /// Edge exponent g.
     g: f64,
     /// N = 1 / B(1/2, 1 - g).
@@ -32,22 +32,16 @@ pub struct SpenceSolution {
     stick: Option<StickShear>,
 }
 
-/// Solves Spence's approximation for bp >= 0, bq > 0, mu >= 0 (finite); mu = 0 gives c = 0,
-/// q = 0. The compatibility condition has exactly one root for mu > 0, so NoConvergence only
-/// reports a root beyond |ln(c^2 / (1 - c^2))| = 1e7.
+/// Solves Spence's approximation (the coupling must pass [`Coupling::validate`]); mu = 0 gives
+/// c = 0, q = 0. The compatibility condition has exactly one root for mu > 0, so NoConvergence
+/// only reports a root beyond |ln(c^2 / (1 - c^2))| = 1e7.
 pub fn solve(k: &Coupling) -> Result<SpenceSolution> {
-    let finite = k.bp.is_finite() && k.bq.is_finite() && k.mu.is_finite();
-    if !(finite && k.bp >= 0.0 && k.bq > 0.0 && k.mu >= 0.0) {
-        return Err(Error::InvalidArgument(format!(
-            "Spence needs bp >= 0, bq > 0 and mu >= 0, finite (bp = {}, bq = {}, mu = {})",
-            k.bp, k.bq, k.mu
-        )));
-    }
+    k.validate()?;
     let h = (k.bp * k.mu).atan() / PI;
     let g = 0.5 - h;
     let norm = (ln_gamma(1.5 - g) - 0.5 * PI.ln() - ln_gamma(1.0 - g)).exp();
     let mut sol = SpenceSolution {
-        mu: k.mu,
+        coupling: *k,
         g,
         norm,
         edge: StickEdge::from_c(0.0),
@@ -80,6 +74,10 @@ impl SpenceSolution {
 }
 
 impl Profile for SpenceSolution {
+    fn coupling(&self) -> Coupling {
+        self.coupling
+    }
+
     fn edge(&self) -> StickEdge {
         self.edge
     }
@@ -88,20 +86,12 @@ impl Profile for SpenceSolution {
         self.error
     }
 
-    fn tractions(&self, x: f64) -> (f64, f64) {
-        let ax = x.abs();
-        let ell = ((1.0 - ax) * (1.0 + ax)).ln();
+    fn half_line_tractions(&self, x: f64) -> (f64, f64) {
+        let ell = ((1.0 - x) * (1.0 + x)).ln();
         let p = self.norm * (-self.g * ell).exp();
         let q = match &self.stick {
-            Some(stick) if ax < self.edge.c => stick.q(ax, p, ell, self.edge.c),
-            _ => self.mu * p,
-        };
-        let q = if x > 0.0 {
-            q
-        } else if x < 0.0 {
-            -q
-        } else {
-            0.0
+            Some(stick) if x < self.edge.c => stick.q(x, p, ell, self.edge.c),
+            _ => self.coupling.mu * p,
         };
         (p, q)
     }

@@ -3,6 +3,7 @@
 //! q_S by quadrature, and the reduction of THEORY.md section 4.
 
 use super::*;
+use crate::error::Error;
 use crate::goodman;
 
 /// Adaptive tanh-sinh quadrature of f on [a, b]; f receives the node t and its distances
