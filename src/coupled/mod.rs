@@ -208,10 +208,12 @@ impl<'a> Level<'a> {
         }
     }
 
-    /// Fixes the layout to the one of t.
+    /// Fixes the layout to the one of t. The evaluations so far (other layouts, or the scan
+    /// order) no longer count for the slope.
     fn fix_layout(&mut self, t: f64) {
         let (c, w) = edge_of(t);
         self.layout = Some(Layout::for_edge(c, w));
+        self.evals.clear();
     }
     /// Brent's method on kappa(t) in [a, b] with kappa(a) < 0 < kappa(b), to this level's
     /// xtol in t.
@@ -292,9 +294,10 @@ impl<'a> Level<'a> {
         }
     }
 
-    /// d kappa / dt at the root t: the secant of the two evaluations within 0.1 of t whose
-    /// kappa differ most, if that difference stands out of kappa's rounding noise (10 times
-    /// the smallest |kappa| seen); NaN otherwise.
+    /// d kappa / dt at the root t: the secant of the two evaluations (on this level's fixed
+    /// layout) within 0.1 of t whose kappa differ most, if that difference stands out of
+    /// kappa's rounding noise (10 times the smallest |kappa| seen) and the secant rises (kappa
+    /// crosses zero upwards at the physical root); NaN otherwise.
     fn slope(&self, t: f64) -> f64 {
         let near: Vec<&(f64, f64)> = self
             .evals
@@ -306,8 +309,9 @@ impl<'a> Level<'a> {
         for (i, a) in near.iter().enumerate() {
             for b in &near[i + 1..] {
                 let df = (a.1 - b.1).abs();
-                if df > best.0 && a.0 != b.0 {
-                    best = (df, (a.1 - b.1) / (a.0 - b.0));
+                let secant = (a.1 - b.1) / (a.0 - b.0);
+                if df > best.0 && a.0 != b.0 && secant > 0.0 {
+                    best = (df, secant);
                 }
             }
         }

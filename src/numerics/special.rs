@@ -107,6 +107,9 @@ pub(crate) fn ln_gamma_slope(x: f64, e: f64) -> f64 {
 /// Largest number of hypergeometric series terms; |z| <= 1/2 needs about 60.
 const MAX_TERMS: usize = 400;
 
+/// Relative size of the first hypergeometric series term left out.
+const SERIES_TOL: f64 = 1e-17;
+
 /// The power series of 2F1(a, b; c; z) for |z| <= 1/2 (DLMF 15.2.1).
 pub(crate) fn hyp2f1_series(a: f64, b: f64, c: f64, z: f64) -> f64 {
     let (mut term, mut sum) = (1.0, 1.0);
@@ -114,7 +117,7 @@ pub(crate) fn hyp2f1_series(a: f64, b: f64, c: f64, z: f64) -> f64 {
         let n = n as f64;
         term *= (a + n) * (b + n) / ((c + n) * (n + 1.0)) * z;
         sum += term;
-        if term.abs() <= 0.5 * f64::EPSILON * sum.abs() {
+        if term.abs() <= SERIES_TOL * sum.abs() {
             break;
         }
     }
@@ -152,7 +155,7 @@ pub(crate) fn hyp2f1_near_one(a: f64, b: f64, e: f64, w: f64, ln_w: f64) -> f64 
         sum += term;
         let nf = n as f64;
         wn *= w;
-        if wn == 0.0 || (n > 0 && term.abs() <= 0.5 * f64::EPSILON * sum.abs()) {
+        if wn == 0.0 || (n > 0 && term.abs() <= SERIES_TOL * sum.abs()) {
             break;
         }
         da += log_slope(a + nf, e);
