@@ -157,15 +157,6 @@ fn run(method: Method, k: &Coupling, tol: f64) -> Run {
     }
 }
 
-/// |c_a - c_b|, from 1 - c when both edges are near 1 (no cancellation).
-fn edge_error(a: StickEdge, b: StickEdge) -> f64 {
-    if a.c > 0.5 && b.c > 0.5 {
-        (a.one_minus_c - b.one_minus_c).abs()
-    } else {
-        (a.c - b.c).abs()
-    }
-}
-
 /// A point of the map: where it comes from and its coupling.
 struct Scene {
     family: &'static str,
@@ -299,7 +290,7 @@ impl Solved {
 
     /// |c - c_ref| of method i, where both exist.
     fn true_error(&self, i: usize) -> Option<f64> {
-        Some(edge_error(self.runs[i].edge()?, self.reference(i)?))
+        Some(self.runs[i].edge()?.distance(self.reference(i)?))
     }
 
     /// Accuracy of method i's reference.
@@ -340,7 +331,7 @@ fn csv_row(csv: &mut String, s: &Solved, name: &str, r: &Run, reference: Option<
         ),
         Outcome::Failed { message, .. } => (String::new(), None, None, None, message.clone()),
     };
-    let err = r.edge().zip(reference).map(|(a, b)| edge_error(a, b));
+    let err = r.edge().zip(reference).map(|(a, b)| a.distance(b));
     let ratio = estimate.zip(err).map(|(e, t)| e / t);
     let _ = writeln!(
         csv,

@@ -33,7 +33,7 @@ fn thetas(q: f64) -> (f64, f64, f64) {
 /// closed form through the nome: with q = exp(-pi ratio), k = theta2^2 / theta3^2 and
 /// k'^2 = theta4^4 / theta3^4; for ratio < 1 the complementary nome exp(-pi / ratio) swaps
 /// the roles of k and k'. 1 - c = k'^2 / (1 + k) never cancels.
-pub fn stick_edge(ratio: f64) -> StickEdge {
+pub(crate) fn stick_edge(ratio: f64) -> StickEdge {
     if ratio >= 1.0 {
         let (t2, t3, t4) = thetas((-PI * ratio).exp());
         let k = (t2 / t3).powi(2);

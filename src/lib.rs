@@ -3,7 +3,7 @@
 //! Contact tractions of a rigid flat-ended punch pressed into an orthotropic elastic
 //! half-plane with Coulomb friction (partial slip), after Shen et al. (the paper in
 //! `shared/paper`) and the project's THEORY notes. The Rust core lives in the modules below;
-//! the C ABI in [`ffi`] wraps it and is the only place that deals with raw pointers.
+//! the C ABI in `src/ffi/` wraps it and is the only place that deals with raw pointers.
 //!
 //! ```
 //! use orthoslip::{Contact, Material, Method};
@@ -32,7 +32,8 @@ pub mod goodman;
 pub mod lcp;
 pub mod spence;
 
-pub mod ffi;
+// The C ABI: its exported functions are the C API, nothing in it is Rust API.
+mod ffi;
 
 pub use contact::{Contact, Method, Solution};
 pub use error::{Error, Result};

@@ -96,6 +96,16 @@ impl StickEdge {
             one_minus_c: w,
         }
     }
+
+    /// |c - other.c|, from the slip widths when both edges lie above 1/2 (no cancellation
+    /// near full stick), else from c.
+    pub fn distance(&self, other: StickEdge) -> f64 {
+        if self.c > 0.5 && other.c > 0.5 {
+            (self.one_minus_c - other.one_minus_c).abs()
+        } else {
+            (self.c - other.c).abs()
+        }
+    }
 }
 
 /// Checks a tolerance on |c - c_exact|: finite, 0 < tol < 1.

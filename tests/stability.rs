@@ -299,12 +299,7 @@ fn invalid_inputs_give_invalid_argument_with_a_message() {
 
 /// |c_a - c_b| from whichever of c, 1 - c is small.
 fn edge_error(a: &dyn Profile, b: &dyn Profile) -> f64 {
-    let (a, b) = (a.edge(), b.edge());
-    if a.c > 0.5 && b.c > 0.5 {
-        (a.one_minus_c - b.one_minus_c).abs()
-    } else {
-        (a.c - b.c).abs()
-    }
+    a.edge().distance(b.edge())
 }
 
 /// Method `s`'s error estimate at k: `numerical_error`, plus the model-error bound for the

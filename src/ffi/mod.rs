@@ -21,9 +21,8 @@ use std::panic::{AssertUnwindSafe, catch_unwind};
 use crate::contact::Method;
 use crate::error::Error;
 
-pub use contact::*;
-pub use material::*;
-pub use solution::*;
+use material::orthoslip_material;
+use solution::orthoslip_solution;
 
 /// Status code returned by every fallible orthoslip function.
 #[repr(C)]
