@@ -116,7 +116,7 @@ impl Contact {
         })
     }
 
-    /// AUTO's choice: Goodman if its certified model error (the table of
+    /// AUTO's choice: Goodman if its empirical model-error bound (the table of
     /// [`crate::model_error`]) is within the tolerance, else Spence if its is, else COUPLED.
     pub fn auto_choice(&self, k: &Coupling) -> Method {
         [
@@ -129,7 +129,7 @@ impl Contact {
     }
 }
 
-/// The model-error bound of an approximation, +infinity where none is certified.
+/// The empirical model-error bound of an approximation, +infinity where the table gives none.
 fn model_bound(a: Approximation, k: &Coupling) -> f64 {
     model_error::bound(a, k).unwrap_or(f64::INFINITY)
 }
@@ -164,8 +164,9 @@ impl Solution {
     }
 
     /// Estimate of |c - c_exact|, c_exact being the exact solution of the coupled problem:
-    /// discretisation error for COUPLED and LCP, certified model error (plus rounding) for
-    /// GOODMAN and SPENCE, +infinity where no model-error bound is available.
+    /// discretisation error for COUPLED and LCP, the empirical model-error bound of
+    /// [`crate::model_error`] (plus rounding) for GOODMAN and SPENCE, +infinity where the
+    /// table gives no bound.
     pub fn error_estimate(&self) -> f64 {
         self.c_error
     }

@@ -1,39 +1,122 @@
-//! The committed model-error table (`src/model_error/table.rs`) is what its generator
-//! (`examples/model_error_table/generator.rs`) computes now.
+//! The model-error table behind the approximations' error estimates and AUTO
+//! (`src/model_error/`): the committed table is what its generator
+//! (`examples/model_error_table/generator.rs`) computes now, entry by entry, and the
+//! empirical bound it gives holds at random points the table was not built from.
 
 #[allow(dead_code)]
 #[path = "../examples/model_error_table/generator.rs"]
 mod generator;
 
 use generator::{round_up, sample};
-use orthoslip::model_error::{Approximation, B_STAR, FLOOR, LOG10_MU, tabulated};
+use orthoslip::model_error::{
+    Approximation, B_STAR, FLOOR, LOG10_MU, bound, tabulated, tabulated_beyond,
+};
+use orthoslip::{Coupling, Profile, coupled, goodman, spence};
 
+/// Random points of the validation.
+const POINTS: usize = 200;
+/// Tolerance of the COUPLED reference at those points.
+const REFERENCE_TOL: f64 = 1e-11;
+
+/// A fresh value against the committed one: equal after rounding up to two digits (to 10%
+/// of the value plus the reference's accuracy).
+fn assert_matches(what: &str, stored: f64, fresh: f64) {
+    assert!(
+        (stored - round_up(fresh)).abs() <= 0.1 * fresh + 2.0 * FLOOR,
+        "{what}: table {stored:e}, fresh {fresh:e} \
+         (regenerate: cargo run --release --example model_error_table)"
+    );
+}
+
+/// Every entry: 19 x 16 COUPLED solves at 1e-10, the model errors of both approximations,
+/// and the bounds below and above the tabulated friction range.
 #[test]
 fn committed_table_matches_a_fresh_computation() {
-    // Every 13th entry (row and column both vary): 24 COUPLED solves.
-    let mut checked = 0;
-    for idx in (0..B_STAR.len() * LOG10_MU.len()).step_by(13) {
-        let (i, j) = (idx / LOG10_MU.len(), idx % LOG10_MU.len());
-        let fresh = sample(B_STAR[i], 10f64.powf(LOG10_MU[j]));
-        for (a, pick) in [
-            (Approximation::Goodman, fresh.as_ref().map(|s| s.goodman)),
-            (Approximation::Spence, fresh.as_ref().map(|s| s.spence)),
-        ] {
-            let stored = tabulated(a)[i][j];
-            match pick {
-                Ok(e) => {
-                    assert!(
-                        (stored - round_up(e)).abs() <= 0.1 * e + 2.0 * FLOOR,
-                        "{a:?} at b* = {}, log10 mu~ = {}: table {stored:e}, fresh {e:e} \
-                         (regenerate: cargo run --release --example model_error_table)",
-                        B_STAR[i],
-                        LOG10_MU[j]
-                    );
-                    checked += 1;
+    let (below, above) = tabulated_beyond();
+    let last = LOG10_MU.len() - 1;
+    let mut finite = 0;
+    for (i, &b) in B_STAR.iter().enumerate() {
+        for (j, &l) in LOG10_MU.iter().enumerate() {
+            let at = format!("b* = {b}, log10 mu~ = {l}");
+            let stored =
+                [Approximation::Goodman, Approximation::Spence].map(|a| tabulated(a)[i][j]);
+            match sample(b, 10f64.powf(l)) {
+                Ok(s) => {
+                    assert_matches(&format!("Goodman at {at}"), stored[0], s.goodman);
+                    assert_matches(&format!("Spence at {at}"), stored[1], s.spence);
+                    if j == 0 {
+                        assert_matches(&format!("largest c at {at}"), below[i], s.max_c);
+                    }
+                    if j == last {
+                        let w = s.max_one_minus_c;
+                        assert_matches(&format!("largest 1 - c at {at}"), above[i], w);
+                    }
+                    finite += 1;
                 }
-                Err(_) => assert!(stored.is_infinite()),
+                Err(e) => {
+                    let beyond = [(j == 0, below[i]), (j == last, above[i])];
+                    assert!(
+                        stored.iter().all(|v| v.is_infinite())
+                            && beyond.iter().all(|&(edge, v)| !edge || v.is_infinite()),
+                        "{at}: the reference fails now ({e}), the table has {stored:?}"
+                    );
+                }
             }
         }
     }
-    assert!(checked > 20, "only {checked} finite entries checked");
+    println!(
+        "{finite} of {} entries finite and equal to a fresh computation",
+        B_STAR.len() * LOG10_MU.len()
+    );
+    assert!(finite > 250, "only {finite} finite entries");
+}
+
+/// The bound is empirical (twice the largest tabulated error at the corners of the grid
+/// cell, plus FLOOR), so it is checked where the table knows nothing: at random (b*, mu~)
+/// inside its range (uniform in b* and log10 mu~, fixed seed), against COUPLED to 1e-11.
+#[test]
+fn empirical_bound_holds_off_the_grid() {
+    let mut rng = fastrand::Rng::with_seed(20_240_607);
+    let span = |g: &[f64], u: f64| g[0] + (g[g.len() - 1] - g[0]) * u;
+    let mut compared = [0usize; 2];
+    let mut no_bound = [0usize; 2];
+    let mut no_reference = 0;
+    let mut worst = [(0.0_f64, 0.0, 0.0); 2];
+    for _ in 0..POINTS {
+        let b = span(&B_STAR, rng.f64());
+        let mu = 10f64.powf(span(&LOG10_MU, rng.f64()));
+        let k = Coupling { bp: b, bq: b, mu };
+        let Ok(exact) = coupled::solve(&k, REFERENCE_TOL) else {
+            no_reference += 1;
+            continue;
+        };
+        let edges = [
+            (Approximation::Goodman, goodman::solve(&k).unwrap().edge()),
+            (Approximation::Spence, spence::solve(&k).unwrap().edge()),
+        ];
+        for (n, (a, approx)) in edges.into_iter().enumerate() {
+            let err = approx.distance(exact.edge());
+            let Some(bd) = bound(a, &k) else {
+                no_bound[n] += 1;
+                continue;
+            };
+            assert!(
+                err <= bd,
+                "{a:?} at b* = {b}, mu~ = {mu}: error {err:e} above the bound {bd:e}"
+            );
+            compared[n] += 1;
+            if err / bd > worst[n].0 {
+                worst[n] = (err / bd, b, mu);
+            }
+        }
+    }
+    for (n, name) in ["Goodman", "Spence"].iter().enumerate() {
+        let (ratio, b, mu) = worst[n];
+        println!(
+            "{name}: bound held at {} random points ({} without a bound, {no_reference} \
+             without a reference); worst error / bound {ratio:.3} at b* = {b:.4}, mu~ = {mu:.4}",
+            compared[n], no_bound[n]
+        );
+    }
+    assert!(compared.iter().all(|&c| c >= POINTS / 2), "{compared:?}");
 }
