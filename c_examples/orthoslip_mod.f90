@@ -15,6 +15,7 @@ module orthoslip_mod
   integer(c_int), parameter, public :: ORTHOSLIP_ERROR_NO_CONVERGENCE = 4
   integer(c_int), parameter, public :: ORTHOSLIP_ERROR_TOLERANCE_NOT_MET = 5
   integer(c_int), parameter, public :: ORTHOSLIP_ERROR_INTERNAL = 6
+  integer(c_int), parameter, public :: ORTHOSLIP_ERROR_PANIC = 7
   ! orthoslip_method
   integer(c_int), parameter, public :: ORTHOSLIP_METHOD_AUTO = 0
   integer(c_int), parameter, public :: ORTHOSLIP_METHOD_GOODMAN = 1

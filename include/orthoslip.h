@@ -15,7 +15,8 @@
  * - Every fallible function returns an orthoslip_status. Out-parameters are written only on
  *   ORTHOSLIP_OK; a handle out-parameter is set to NULL on every failure. A failure stores a
  *   message retrievable with orthoslip_last_error_message on the same thread.
- * - No function panics across the boundary or aborts on bad input.
+ * - No function panics across the boundary or aborts on bad input; a panic caught inside
+ *   returns ORTHOSLIP_ERROR_PANIC.
  *
  * Threads
  * - There is no global mutable state. Materials and solutions are immutable and may be used
@@ -60,9 +61,14 @@ typedef enum {
    */
   ORTHOSLIP_ERROR_TOLERANCE_NOT_MET = 5,
   /**
-   * A bug in orthoslip (an internal invariant failed or a panic was caught).
+   * A bug in orthoslip: an internal invariant failed (reported, not panicked).
    */
   ORTHOSLIP_ERROR_INTERNAL = 6,
+  /**
+   * A bug in orthoslip: a panic was caught at the boundary instead of unwinding into the
+   * caller.
+   */
+  ORTHOSLIP_ERROR_PANIC = 7,
 } orthoslip_status;
 
 /**

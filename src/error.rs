@@ -20,7 +20,8 @@ pub enum Error {
         /// What limited the accuracy.
         detail: String,
     },
-    /// A bug: an internal invariant failed (reported, never unwound across the C ABI).
+    /// A bug: an internal invariant failed (reported as ORTHOSLIP_ERROR_INTERNAL; a panic
+    /// caught at the C ABI is ORTHOSLIP_ERROR_PANIC instead).
     Internal(String),
 }
 

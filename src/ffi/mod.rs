@@ -4,8 +4,10 @@
 //!   so it is NULL after every failure;
 //! - a failure also stores a readable message in this thread's last-error slot
 //!   (`orthoslip_last_error_message`); nothing else is global or mutable;
-//! - no panic unwinds across the boundary: bodies run under `catch_unwind` and a panic
-//!   becomes `ORTHOSLIP_ERROR_INTERNAL`;
+//! - no panic unwinds across the boundary: bodies run under `catch_unwind` and a caught panic
+//!   becomes `ORTHOSLIP_ERROR_PANIC`, distinct from `ORTHOSLIP_ERROR_INTERNAL` (a failed
+//!   internal check reported as an error); recording the message runs under `catch_unwind`
+//!   too;
 //! - enum values coming from C are read as integers and validated, never trusted.
 
 #![allow(non_camel_case_types)]
@@ -14,8 +16,10 @@ mod contact;
 mod material;
 mod solution;
 
+use std::any::Any;
 use std::cell::RefCell;
 use std::ffi::{c_char, c_int};
+use std::fmt::Write as _;
 use std::panic::{AssertUnwindSafe, catch_unwind};
 
 use crate::contact::Method;
@@ -41,8 +45,11 @@ pub enum orthoslip_status {
     ORTHOSLIP_ERROR_NO_CONVERGENCE = 4,
     /// The method ran, but its error estimate exceeds the requested tolerance.
     ORTHOSLIP_ERROR_TOLERANCE_NOT_MET = 5,
-    /// A bug in orthoslip (an internal invariant failed or a panic was caught).
+    /// A bug in orthoslip: an internal invariant failed (reported, not panicked).
     ORTHOSLIP_ERROR_INTERNAL = 6,
+    /// A bug in orthoslip: a panic was caught at the boundary instead of unwinding into the
+    /// caller.
+    ORTHOSLIP_ERROR_PANIC = 7,
 }
 
 /// Solution method.
@@ -121,30 +128,51 @@ thread_local! {
     static LAST_ERROR: RefCell<String> = const { RefCell::new(String::new()) };
 }
 
-fn set_last_error(message: String) {
-    LAST_ERROR.with(|slot| *slot.borrow_mut() = message);
+/// Stores `function: message` in this thread's last-error slot. Never panics: a slot that is
+/// gone (thread teardown) or borrowed is left as it is.
+fn set_last_error(function: &str, message: &str) {
+    let _ = LAST_ERROR.try_with(|slot| {
+        if let Ok(mut text) = slot.try_borrow_mut() {
+            text.clear();
+            let _ = write!(text, "{function}: {message}");
+        }
+    });
+}
+
+/// The text of a panic payload (a `&str` or `String` message, else empty).
+fn panic_text(payload: &(dyn Any + Send)) -> &str {
+    payload
+        .downcast_ref::<&str>()
+        .copied()
+        .or_else(|| payload.downcast_ref::<String>().map(String::as_str))
+        .unwrap_or("")
 }
 
 /// Runs an ABI body: catches panics, records failures in the last-error slot and turns the
-/// outcome into a status.
+/// outcome into a status. Everything after a failure (formatting and storing the message,
+/// dropping a panic payload) also runs under `catch_unwind`; should that panic too, its
+/// payload is leaked rather than dropped outside.
 pub(crate) fn run(function: &str, body: impl FnOnce() -> Result<(), Failure>) -> orthoslip_status {
-    let failure = match catch_unwind(AssertUnwindSafe(body)) {
-        Ok(Ok(())) => return orthoslip_status::ORTHOSLIP_OK,
-        Ok(Err(f)) => f,
-        Err(payload) => {
-            let what = payload
-                .downcast_ref::<&str>()
-                .map(|s| s.to_string())
-                .or_else(|| payload.downcast_ref::<String>().cloned())
-                .unwrap_or_default();
-            Failure {
-                status: orthoslip_status::ORTHOSLIP_ERROR_INTERNAL,
-                message: format!("internal error: panic caught ({what})"),
-            }
+    let outcome = catch_unwind(AssertUnwindSafe(body));
+    if matches!(outcome, Ok(Ok(()))) {
+        return orthoslip_status::ORTHOSLIP_OK;
+    }
+    catch_unwind(AssertUnwindSafe(move || match outcome {
+        Ok(Ok(())) => orthoslip_status::ORTHOSLIP_OK,
+        Ok(Err(failure)) => {
+            set_last_error(function, &failure.message);
+            failure.status
         }
-    };
-    set_last_error(format!("{function}: {}", failure.message));
-    failure.status
+        Err(payload) => {
+            let message = format!("panic caught ({})", panic_text(payload.as_ref()));
+            set_last_error(function, &message);
+            orthoslip_status::ORTHOSLIP_ERROR_PANIC
+        }
+    }))
+    .unwrap_or_else(|payload| {
+        std::mem::forget(payload);
+        orthoslip_status::ORTHOSLIP_ERROR_PANIC
+    })
 }
 
 /// A shared reference from a pointer that must not be NULL.
@@ -255,6 +283,7 @@ pub extern "C" fn orthoslip_status_string(status: StatusArg) -> *const c_char {
         4 => c"ORTHOSLIP_ERROR_NO_CONVERGENCE",
         5 => c"ORTHOSLIP_ERROR_TOLERANCE_NOT_MET",
         6 => c"ORTHOSLIP_ERROR_INTERNAL",
+        7 => c"ORTHOSLIP_ERROR_PANIC",
         _ => c"ORTHOSLIP_STATUS_UNKNOWN",
     };
     s.as_ptr()
@@ -265,4 +294,48 @@ pub extern "C" fn orthoslip_status_string(status: StatusArg) -> *const c_char {
 #[unsafe(no_mangle)]
 pub extern "C" fn orthoslip_version() -> *const c_char {
     concat!(env!("CARGO_PKG_VERSION"), "\0").as_ptr().cast()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn last_error() -> String {
+        LAST_ERROR.with(|slot| slot.borrow().clone())
+    }
+
+    /// A caught panic and an internal error have their own statuses and messages; success
+    /// leaves the message alone.
+    #[test]
+    fn panics_and_internal_errors_are_told_apart() {
+        let status = run("orthoslip_test_panic", || panic!("boom"));
+        assert_eq!(status, orthoslip_status::ORTHOSLIP_ERROR_PANIC);
+        assert_eq!(last_error(), "orthoslip_test_panic: panic caught (boom)");
+        let status = run("orthoslip_test_internal", || {
+            Err(Error::Internal("invariant".into()).into())
+        });
+        assert_eq!(status, orthoslip_status::ORTHOSLIP_ERROR_INTERNAL);
+        assert_eq!(
+            last_error(),
+            "orthoslip_test_internal: internal error: invariant"
+        );
+        assert_eq!(
+            run("orthoslip_test_ok", || Ok(())),
+            orthoslip_status::ORTHOSLIP_OK
+        );
+        assert!(last_error().starts_with("orthoslip_test_internal"));
+        let name = unsafe { std::ffi::CStr::from_ptr(orthoslip_status_string(StatusArg(7))) };
+        assert_eq!(name.to_str(), Ok("ORTHOSLIP_ERROR_PANIC"));
+    }
+
+    /// A message cannot be stored while the slot is borrowed: the call still returns its
+    /// status, without a panic.
+    #[test]
+    fn a_busy_slot_does_not_panic() {
+        LAST_ERROR.with(|slot| {
+            let _held = slot.borrow_mut();
+            let status = run("orthoslip_test", || Err(Failure::null("x")));
+            assert_eq!(status, orthoslip_status::ORTHOSLIP_ERROR_NULL_POINTER);
+        });
+    }
 }

@@ -357,12 +357,13 @@ static void check_strings(void)
         "ORTHOSLIP_ERROR_NO_CONVERGENCE",
         "ORTHOSLIP_ERROR_TOLERANCE_NOT_MET",
         "ORTHOSLIP_ERROR_INTERNAL",
+        "ORTHOSLIP_ERROR_PANIC",
     };
     const char *v = orthoslip_version();
     unsigned major, minor, patch;
     char end;
     int i;
-    for (i = 0; i < 7; i++) {
+    for (i = 0; i < (int)(sizeof names / sizeof names[0]); i++) {
         const char *s = orthoslip_status_string((orthoslip_status)i);
         CHECK(s != NULL && strcmp(s, names[i]) == 0);
     }
