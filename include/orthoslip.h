@@ -19,9 +19,11 @@
  *   returns ORTHOSLIP_ERROR_PANIC.
  *
  * Threads
- * - There is no global mutable state. Materials and solutions are immutable and may be used
- *   from many threads at once; orthoslip_contact_solve may run on one contact from many
- *   threads at once; setters and *_free need exclusive access to their handle.
+ * - There is no global mutable state: the last-error message is kept per thread, and the
+ *   only data shared between threads are immutable tables (quadrature nodes) built once on
+ *   first use. Materials and solutions are immutable and may be used from many threads at
+ *   once; orthoslip_contact_solve may run on one contact from many threads at once; setters
+ *   and *_free need exclusive access to their handle.
  */
 
 #ifndef ORTHOSLIP_H

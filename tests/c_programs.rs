@@ -8,8 +8,8 @@ use std::path::{Path, PathBuf};
 use std::process::{Command, Output};
 use std::time::Instant;
 
-/// What `rustc --print native-static-libs` lists for the static library (besides -lc).
-const NATIVE_LIBS: &[&str] = &["-lgcc_s", "-lutil", "-lrt", "-lpthread", "-lm", "-ldl"];
+/// What `rustc --print native-static-libs` lists for the static library (found by build.rs).
+const NATIVE_LIBS: &str = env!("ORTHOSLIP_NATIVE_STATIC_LIBS");
 /// GSL, after the library.
 const GSL_LIBS: &[&str] = &["-lgsl", "-lgslcblas", "-lm"];
 const WARNINGS: &[&str] = &["-Wall", "-Wextra", "-Werror", "-pedantic"];
@@ -120,7 +120,7 @@ fn build(name: &str, lang: Lang) -> PathBuf {
         .arg(manifest_dir().join(format!("tests/c/{name}.c")))
         .args(["-x", "none"])
         .arg(static_library())
-        .args(NATIVE_LIBS)
+        .args(NATIVE_LIBS.split_whitespace())
         .args(GSL_LIBS)
         .arg("-o")
         .arg(&exe);

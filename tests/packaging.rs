@@ -14,7 +14,11 @@ use std::time::Instant;
 
 const SKIP_VAR: &str = "ORTHOSLIP_SKIP_PACKAGING";
 const VERSION: &str = env!("CARGO_PKG_VERSION");
-const SONAME: &str = "liborthoslip.so.0";
+/// The SONAME build.rs gave the library (ABI version by Cargo's semver rule); the CMake route
+/// must install exactly this name.
+const SONAME: &str = env!("ORTHOSLIP_SONAME");
+/// The native libraries build.rs got from `rustc --print native-static-libs`.
+const NATIVE_LIBS: &str = env!("ORTHOSLIP_NATIVE_STATIC_LIBS");
 /// Points in the p, q table each example prints.
 const TABLE_ROWS: usize = 21;
 /// Agreement required between consumers (they all call the same library).
@@ -165,7 +169,7 @@ fn assert_static(exe: &Path) {
     );
 }
 
-/// `ldd` resolves liborthoslip.so.0 of `exe` (run with `lib_path` as LD_LIBRARY_PATH if given)
+/// `ldd` resolves the SONAME of `exe` (run with `lib_path` as LD_LIBRARY_PATH if given)
 /// to the installed file in `libdir`.
 fn assert_resolves_into(exe: &Path, libdir: &Path, lib_path: Option<&Path>) {
     let mut ldd = command("ldd");
@@ -323,8 +327,9 @@ fn install_and_consume() {
     };
     assert_eq!(pkg_config(&["--modversion"]).trim(), VERSION);
     let static_libs = pkg_config(&["--static", "--libs"]);
-    for lib in ["-lpthread", "-ldl", "-lm"] {
-        assert!(static_libs.contains(lib), "Libs.private lacks {lib}");
+    for lib in NATIVE_LIBS.split_whitespace() {
+        let listed = static_libs.split_whitespace().any(|l| l == lib);
+        assert!(listed, "Libs.private lacks {lib}");
     }
     let flags = pkg_config(&["--cflags", "--libs"]);
     let exe = work.join("default_scene_pkgconfig");
