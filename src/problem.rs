@@ -1,8 +1,8 @@
 //! The boundary-value problem (THEORY.md section 3), with the material entering only
 //! through bp = A / (pi C) and bq = A / (pi B):
-//! with H[f](x) = (1/pi) PV int_{-1}^{1} f(t) / (x - t) dt,
-//! - (E1) H[p] = bp q on |x| < 1 (paper eq. (10)),
-//! - (E2) H[q] = -bq p on |x| < c (stick, paper eq. (11)),
+//! with H\[f\](x) = (1/pi) PV int_{-1}^{1} f(t) / (x - t) dt,
+//! - (E1) H\[p\] = bp q on |x| < 1 (paper eq. (10)),
+//! - (E2) H\[q\] = -bq p on |x| < c (stick, paper eq. (11)),
 //! - (E3) q = mu p sgn(x) on c < |x| < 1 (slip, paper eq. (9)),
 //! - (E4) int p = 1, q odd.
 //!

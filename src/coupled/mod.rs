@@ -1,12 +1,13 @@
 //! orthoslip's solver of the full coupled partial-slip problem (E1)-(E4) (METHOD_COUPLED).
 //!
-//! Method (COUPLED.md, THEORY.md sections 3-5):
+//! Method (THEORY.md sections 3-5):
 //! - the exact reduction (bp, bq, mu) -> (b*, b*, mu / delta), q = delta q~ (bp > 0);
 //! - for a trial stick edge c, a collocation system on panels graded geometrically towards
-//!   x = c and x = 1 ([`mesh`]), whose bases carry the local exponents: (1 - x)^(-g) at the
+//!   x = c and x = 1 (`mesh`), whose bases carry the local exponents: (1 - x)^(-g) at the
 //!   punch edge, (x - c)^g on the slip side and (c - x)^g in q on the stick side, plus the
-//!   wrong-c modes |x - c|^(g-1) ([`system`]); all singular integrals are evaluated in closed
-//!   form or to rounding ([`cauchy`]), so the error decays geometrically in the order n;
+//!   wrong-c modes |x - c|^(g-1) (`system`); all singular integrals are evaluated in closed
+//!   form or to rounding (`numerics::cauchy`), so the error decays geometrically in
+//!   the order n;
 //! - c is the root of kappa(c), the coefficient of q's (c - x)^(g-1) mode (bounded q at c is
 //!   the compatibility condition), found in t = ln(c / (1 - c)) so that c ~ 1e-20 and
 //!   1 - c ~ 1e-12 are both carried to full relative accuracy;
@@ -24,12 +25,11 @@
 //! that order). The solution is checked for |q| <= mu p on the stick zone before it is
 //! returned.
 //!
-//! Range: 2e-35 < c and 1 - c > 4e-18 (outside it NoConvergence says so); the number of
-//! panels grows like log(1 / min(c, 1 - c)). Cost (measured, one core, shared machine):
-//! 5-31 ms per solve to tol = 1e-10 and 2-9 ms to 1e-6 for c in [5e-5, 1 - 2e-3]
-//! (6-9 cheap order-4 solves, then about two column-pivoted least-squares solves per order,
-//! 100-350 unknowns at the last); the first solve for a new edge exponent g also builds the
-//! transform families (0.2-0.4 ms per order, then shared); tractions 30-60 ns per point.
+//! Range: `T_MIN` < t < `T_MAX`, i.e. c > 2e-35 and 1 - c > 4e-18 (outside it
+//! NoConvergence says so); the number of panels grows like log(1 / min(c, 1 - c)). A solve
+//! is 6-9 cheap order-4 solves, then about two column-pivoted least-squares solves per order
+//! (100-350 unknowns at the last); `cargo run --release --example coupled_timing` measures
+//! the cost.
 
 mod mesh;
 mod system;
@@ -43,6 +43,17 @@ use crate::numerics::roots::brent;
 use crate::problem::{Coupling, Profile, StickEdge, validate_tolerance};
 use mesh::{Layout, Pt};
 use system::{Constants, Discrete, Families, solve_fixed};
+
+/// The range of t = ln(c / (1 - c)) the first-root scan covers: c = e^-80 = 1.8e-35 up to
+/// 1 - c = e^-40 = 4.2e-18 (roughly the smallest c and 1 - c the panel layouts resolve).
+const T_MIN: f64 = -80.0;
+const T_MAX: f64 = 40.0;
+
+/// Range of Goodman's stick edge, in t, as the start of the scan.
+const GUESS_RANGE: (f64, f64) = (-60.0, 30.0);
+
+/// Steps down from the start before the scan gives up on finding kappa < 0.
+const MAX_STEPS_DOWN: usize = 30;
 
 /// Smallest and largest step in t = ln(c / (1 - c)) of the scan for the first root (the
 /// roots near full stick repeat every pi / eps >= 12 in ln(1 - c) for b* < 0.99, so no step
@@ -137,7 +148,7 @@ fn edge_of(t: f64) -> (f64, f64) {
 /// t = ln(c / (1 - c)), clamped to the range the scan works in.
 fn goodman_guess(bq: f64, mu: f64) -> f64 {
     let e = crate::goodman::stick_edge(bq / mu);
-    (e.c.ln() - e.one_minus_c.ln()).clamp(-60.0, 30.0)
+    (e.c.ln() - e.one_minus_c.ln()).clamp(GUESS_RANGE.0, GUESS_RANGE.1)
 }
 
 /// Root finder state for one order n.
@@ -234,11 +245,11 @@ impl<'a> Level<'a> {
         while self.kappa(lo)?.partial_cmp(&0.0) != Some(std::cmp::Ordering::Less) {
             lo -= 2.0;
             steps += 1;
-            if steps > 30 || lo < -80.0 {
-                return Err(Error::NoConvergence(
-                    "kappa >= 0 down to c = 2e-35: the stick zone is below the solver's range"
-                        .into(),
-                ));
+            if steps > MAX_STEPS_DOWN || lo < T_MIN {
+                return Err(Error::NoConvergence(format!(
+                    "kappa >= 0 down to c = {:.0e}: the stick zone is below the solver's range",
+                    edge_of(T_MIN).0
+                )));
             }
         }
         let mut f_lo = self.evals[self.evals.len() - 1].1;
@@ -284,12 +295,12 @@ impl<'a> Level<'a> {
             }
             f_lo = f_hi;
             lo = hi;
-            if lo > 40.0 {
-                return Err(Error::NoConvergence(
-                    "no sign change of kappa for 1 - c >= 4e-18: the slip zones are below the \
-                     solver's range"
-                        .into(),
-                ));
+            if lo > T_MAX {
+                return Err(Error::NoConvergence(format!(
+                    "no sign change of kappa for 1 - c >= {:.0e}: the slip zones are below the \
+                     solver's range",
+                    edge_of(T_MAX).1
+                )));
             }
         }
     }

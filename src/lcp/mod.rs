@@ -267,7 +267,7 @@ impl LcpSolution {
     pub fn panel_tractions(&self) -> (&[f64], &[f64]) {
         (&self.p, &self.q)
     }
-    /// Slip s(x_i) = int_0^{x_i} (bq p + H[q]) >= 0 (u = -pi B s).
+    /// Slip s(x_i) = int_0^{x_i} (bq p + H\[q\]) >= 0 (u = -pi B s).
     pub fn slip(&self) -> &[f64] {
         &self.slip
     }

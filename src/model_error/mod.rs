@@ -73,8 +73,8 @@ fn interval(grid: &[f64], v: f64) -> (usize, usize) {
 ///
 /// Inside the grid: the largest error at the cell's corners. Below the first column (mu~
 /// smaller): c grows with mu~ for every method, so |c_approx - c_exact| <= max of the c's
-/// at the first column ([`table::BELOW`]). Above the last column: 1 - c falls with mu~, so
-/// the error is at most the largest 1 - c at the last column ([`table::ABOVE`]). Between
+/// at the first column ([`tabulated_beyond`]). Above the last column: 1 - c falls with mu~, so
+/// the error is at most the largest 1 - c at the last column (ibidem). Between
 /// rows of b*, the larger of the two rows' values.
 pub fn bound(a: Approximation, k: &Coupling) -> Option<f64> {
     if k.mu == 0.0 {

@@ -1,8 +1,8 @@
 //! Spence's approximation (THEORY.md section 5): the pressure keeps the slip-zone coupling only
 //! through its edge exponent, p_S = (1 - x^2)^(-g) / B(1/2, 1 - g) with
 //! g = 1/2 - atan(bp mu) / pi; the stick half-width c_S solves the compatibility condition
-//! with p_S (hypergeometric functions, [`compatibility`]); q_S is the bounded solution of (E2)
-//! on the stick zone ([`stick_shear`]) and q_S = mu p_S sgn x on the slip zones (E3).
+//! with p_S (hypergeometric functions, `compatibility`); q_S is the bounded solution of (E2)
+//! on the stick zone (`stick_shear`) and q_S = mu p_S sgn x on the slip zones (E3).
 //! At bp = 0 (g = 1/2) it is Goodman's approximation exactly.
 
 mod compatibility;
