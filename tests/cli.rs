@@ -1,7 +1,11 @@
 //! The `orthoslip` binary run as a user runs it: every number it prints must be the library's
 //! own result to the last bit (it prints shortest round-trip decimals), the exit status must
-//! tell bad input (2) from solver failures (1), errors must be one line and JSON must parse.
+//! tell bad input (2) from solver failures (1), errors must be one line, JSON must parse, and
+//! the README's command-line snippets must run.
 
+mod readme;
+
+use std::path::PathBuf;
 use std::process::Command;
 
 use orthoslip::{Contact, Material, Method, Solution};
@@ -78,6 +82,17 @@ fn floats(v: &Value) -> Vec<f64> {
         .iter()
         .map(|x| x.as_f64().expect("a number"))
         .collect()
+}
+
+fn scratch(name: &str) -> PathBuf {
+    let dir = PathBuf::from(env!("CARGO_TARGET_TMPDIR"))
+        .join("cli")
+        .join(name);
+    if dir.exists() {
+        std::fs::remove_dir_all(&dir).unwrap();
+    }
+    std::fs::create_dir_all(&dir).unwrap();
+    dir
 }
 
 #[test]
@@ -572,4 +587,37 @@ fn help_documents_every_option_and_the_exit_status() {
         version.stdout.trim(),
         format!("orthoslip {}", env!("CARGO_PKG_VERSION"))
     );
+}
+
+#[test]
+fn readme_command_line_snippets_run() {
+    let route = readme::route("cli");
+    let dir = scratch("readme");
+    let bin_dir = PathBuf::from(env!("CARGO_BIN_EXE_orthoslip"));
+    let path = std::env::join_paths(
+        std::iter::once(bin_dir.parent().unwrap().to_path_buf()).chain(std::env::split_paths(
+            &std::env::var_os("PATH").unwrap_or_default(),
+        )),
+    )
+    .unwrap();
+    let mut cmd = route.bash(&dir);
+    cmd.env("PATH", path);
+    let run = run_cmd(cmd);
+    assert_eq!(
+        run.status, 0,
+        "README command-line snippets failed:\n{}",
+        run.stderr
+    );
+    let expected = library(ply(), 0.3, Method::Auto, None).c();
+    assert_eq!(readme::printed_c(&run.stdout), [expected]);
+    let json_line = run
+        .stdout
+        .lines()
+        .find(|l| l.starts_with('{'))
+        .expect("JSON output");
+    assert_eq!(json(json_line)["method"], "coupled");
+    let csv = std::fs::read_to_string(dir.join("c_vs_mu.csv")).expect("c_vs_mu.csv");
+    let rows: Vec<&str> = csv.lines().filter(|l| !l.starts_with('#')).collect();
+    assert_eq!(rows.len(), 1 + 9, "{csv}");
+    assert!(rows[1..].iter().all(|r| r.ends_with(",ok")), "{csv}");
 }

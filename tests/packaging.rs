@@ -3,12 +3,14 @@
 //! as an outside project against that prefix, once with the shared and once with the static
 //! library (the second time after moving the prefix, which checks that the package is
 //! relocatable); a C consumer is built through pkg-config. Every consumer must print the same
-//! stick half-width `c` and the same p, q table. (The Python route is checked by
-//! tests/python.rs.)
+//! stick half-width `c` and the same p, q table. Then the README's C/CMake, pkg-config, C++
+//! and Fortran snippets run against the moved prefix and must print that c too. (The Python
+//! route is checked by tests/python.rs.)
 //!
-//! Needs cmake, C, C++ and Fortran compilers, pkg-config and binutils. A missing tool
+//! Needs cmake, C, C++ and Fortran compilers, pkg-config, bash and binutils. A missing tool
 //! fails the test with what to install, unless ORTHOSLIP_SKIP_PACKAGING=1.
 
+mod readme;
 mod shell;
 
 use std::path::{Path, PathBuf};
@@ -34,6 +36,7 @@ fn missing_tools() -> Vec<String> {
         (env_or("FC", "gfortran"), "gfortran"),
         ("cmake".into(), "cmake"),
         ("pkg-config".into(), "pkg-config"),
+        ("bash".into(), "bash"),
         ("readelf".into(), "binutils"),
         ("ldd".into(), "libc-bin"),
     ];
@@ -313,8 +316,27 @@ fn install_and_consume() {
         &run(command(&exe).env("LD_LIBRARY_PATH", &libdir)),
     ));
 
-    // 4. Every consumer printed the same numbers.
+    // 4. The README's snippets for these routes, against the moved prefix.
+    let snippets = work.join("readme");
+    fresh_dir(&snippets);
+    std::fs::create_dir_all(&snippets).unwrap();
+    let mut script = readme::route("packaging").bash(&snippets);
+    script
+        .env_remove("LD_LIBRARY_PATH")
+        .env("PREFIX", &moved)
+        .env("ORTHOSLIP_SRC", source);
+    let readme_c = readme::printed_c(&run(&mut script));
+    assert_eq!(
+        readme_c.len(),
+        4,
+        "the README's C/CMake, pkg-config, C++ and Fortran snippets each print c"
+    );
+
+    // 5. Every consumer printed the same numbers.
     let reference = &scenes[0];
+    for (i, &c) in readme_c.iter().enumerate() {
+        assert_close(&format!("README snippet {i} c"), reference.c, c);
+    }
     for scene in &scenes {
         println!("{:>22}: c = {:.17}", scene.consumer, scene.c);
         assert_close(&format!("{} c", scene.consumer), reference.c, scene.c);
@@ -329,8 +351,9 @@ fn install_and_consume() {
         }
     }
     println!(
-        "packaging route: {} consumers agree, {:.1} s in total",
+        "packaging route: {} consumers and {} README snippets agree, {:.1} s in total",
         scenes.len(),
+        readme_c.len(),
         total.elapsed().as_secs_f64()
     );
 }

@@ -1,8 +1,8 @@
-//! The Python route as a user takes it: a fresh virtual environment, `pip install ./python`
-//! there (maturin builds the Rust library and bundles it in the wheel), then the package's
-//! pytest suite (`python/tests/`: the API, its exceptions, and the same c, p and q as C
-//! programs built against the bundled library, bit for bit) run by the environment's
-//! interpreter.
+//! The README's Python route as a user takes it: a fresh virtual environment, the README's
+//! `pip install ./python` there (maturin builds the Rust library and bundles it in the wheel),
+//! then the package's pytest suite (`python/tests/`: the API, its exceptions, and the same c,
+//! p and q as C programs built against the bundled library, bit for bit) and the README's
+//! Python snippet, both run by the environment's interpreter.
 //!
 //! Needs python3 with venv and pip (Debian: python3-venv), a C compiler and the package
 //! index (pip fetches maturin, cffi, numpy, pytest and matplotlib). A missing tool fails the
@@ -11,12 +11,14 @@
 //! The wheel's cargo build shares its target directory with the packaging test's CMake build
 //! (`shell::library_target_dir`): after that test, it compiles only this crate.
 
+mod readme;
 mod shell;
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::Instant;
 
+use orthoslip::{Contact, Material};
 use shell::{command, run, run_or_explain};
 
 const SKIP_VAR: &str = "ORTHOSLIP_SKIP_PYTHON";
@@ -65,7 +67,7 @@ fn timed<T>(what: &str, times: &mut Vec<(String, f64)>, step: impl FnOnce() -> T
 }
 
 #[test]
-fn pip_install_then_pytest() {
+fn pip_install_then_pytest_and_the_readme_snippet() {
     if std::env::var(SKIP_VAR).as_deref() == Ok("1") {
         println!("Python test SKIPPED ({SKIP_VAR}=1)");
         return;
@@ -85,7 +87,9 @@ fn pip_install_then_pytest() {
     let work = PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("python");
     let venv = work.join("venv");
     let cargo_target = shell::library_target_dir();
+    let snippets = work.join("readme");
     fresh_dir(&venv);
+    fresh_dir(&snippets);
     let mut times = Vec::new();
 
     timed("create the virtual environment", &mut times, || {
@@ -99,11 +103,11 @@ fn pip_install_then_pytest() {
     });
     let python = venv.join("bin/python");
 
-    timed("pip install ./python", &mut times, || {
+    // The README's install line, run in the checkout as the README says.
+    let install = readme::route("python-install");
+    timed("pip install ./python (README)", &mut times, || {
         run_or_explain(
-            in_venv(&mut command(&python), &venv, &cargo_target)
-                .args(["-m", "pip", "install", "./python"])
-                .current_dir(source),
+            in_venv(&mut install.bash(source), &venv, &cargo_target),
             NEEDS_INDEX,
         )
     });
@@ -123,6 +127,29 @@ fn pip_install_then_pytest() {
             .arg(source.join("python/tests"))
             .current_dir(&work))
     });
+    let printed = timed("README Python snippet", &mut times, || {
+        let snippet = readme::route("python");
+        readme::printed_c(&run(in_venv(
+            &mut snippet.bash(&snippets),
+            &venv,
+            &cargo_target,
+        )))
+    });
+
+    let ply = Material::plane_stress(181e9, 10.3e9, 7.17e9, 0.28).unwrap();
+    let mut contact = Contact::new(ply);
+    contact.set_friction(0.3).unwrap();
+    let c = contact.solve().unwrap().c();
+    assert_eq!(
+        printed.len(),
+        1,
+        "the README's Python snippet prints c once"
+    );
+    assert!(
+        (printed[0] - c).abs() <= 1e-12,
+        "README Python snippet: c = {} but the library gives {c}",
+        printed[0]
+    );
     for (what, seconds) in &times {
         println!("{what}: {seconds:.1} s");
     }
