@@ -5,8 +5,9 @@
 
 mod readme;
 
+use std::io::{BufRead, BufReader};
 use std::path::PathBuf;
-use std::process::Command;
+use std::process::{Command, Stdio};
 
 use orthoslip::{Contact, Material, Method, Solution};
 use serde_json::Value;
@@ -34,9 +35,14 @@ fn orthoslip(args: &[&str]) -> Run {
     run_cmd(cmd)
 }
 
+/// The arguments of `command` on the ply, then `extra`.
+fn on_ply(command: &'static str, extra: &[&'static str]) -> Vec<&'static str> {
+    [&[command][..], &PLY[..], extra].concat()
+}
+
 /// `orthoslip solve` on the ply with `extra` arguments, expecting success.
-fn solve_ply(extra: &[&str]) -> Run {
-    let args: Vec<&str> = ["solve"].iter().chain(&PLY).chain(extra).copied().collect();
+fn solve_ply(extra: &[&'static str]) -> Run {
+    let args = on_ply("solve", extra);
     let run = orthoslip(&args);
     assert_eq!(run.status, 0, "{args:?}: {}", run.stderr);
     assert!(run.stderr.is_empty(), "{}", run.stderr);
@@ -244,22 +250,19 @@ fn csv_output_is_a_table_after_comment_lines() {
 
 #[test]
 fn sweep_prints_c_against_mu() {
-    let args = [
+    let args = on_ply(
         "sweep",
-        PLY[0],
-        PLY[1],
-        PLY[2],
-        PLY[3],
-        PLY[4],
-        "--mu-from",
-        "0.1",
-        "--mu-to",
-        "10",
-        "--steps",
-        "5",
-        "--format",
-        "csv",
-    ];
+        &[
+            "--mu-from",
+            "0.1",
+            "--mu-to",
+            "10",
+            "--steps",
+            "5",
+            "--format",
+            "csv",
+        ],
+    );
     let run = orthoslip(&args);
     assert_eq!(run.status, 0, "{}", run.stderr);
     let rows: Vec<Vec<&str>> = run
@@ -325,20 +328,10 @@ fn sweep_prints_c_against_mu() {
 #[test]
 fn a_failed_point_of_a_sweep_keeps_the_others_and_exits_1() {
     // Below c ~ 1e-35 (mu = 1e-4 for the ply) COUPLED does not converge.
-    let args = [
+    let args = on_ply(
         "sweep",
-        PLY[0],
-        PLY[1],
-        PLY[2],
-        PLY[3],
-        PLY[4],
-        "--mu-from",
-        "1e-4",
-        "--mu-to",
-        "1",
-        "--steps",
-        "2",
-    ];
+        &["--mu-from", "1e-4", "--mu-to", "1", "--steps", "2"],
+    );
     let json_args = [&args[..], &["--format", "json"]].concat();
     let run = orthoslip(&json_args);
     assert_eq!(run.status, 1);
@@ -367,7 +360,7 @@ fn a_failed_point_of_a_sweep_keeps_the_others_and_exits_1() {
 
 #[test]
 fn bad_input_exits_2_and_solver_failures_exit_1_with_one_line() {
-    let solve = |extra: &[&'static str]| [&["solve"][..], &PLY[..], extra].concat();
+    let solve = |extra: &[&'static str]| on_ply("solve", extra);
     let cases: Vec<(Vec<&str>, i32, &str)> = vec![
         (
             vec!["solve", "--mu", "0.3"],
@@ -462,38 +455,15 @@ fn bad_input_exits_2_and_solver_failures_exit_1_with_one_line() {
             "unrecognized subcommand 'frobnicate'",
         ),
         (
-            vec![
-                "sweep",
-                PLY[0],
-                PLY[1],
-                PLY[2],
-                PLY[3],
-                PLY[4],
-                "--mu-from",
-                "0",
-                "--mu-to",
-                "1",
-                "--steps",
-                "3",
-            ],
+            on_ply("sweep", &["--mu-from", "0", "--mu-to", "1", "--steps", "3"]),
             2,
             "--spacing log needs --mu-from and --mu-to > 0",
         ),
         (
-            vec![
+            on_ply(
                 "sweep",
-                PLY[0],
-                PLY[1],
-                PLY[2],
-                PLY[3],
-                PLY[4],
-                "--mu-from",
-                "0.1",
-                "--mu-to",
-                "1",
-                "--steps",
-                "1",
-            ],
+                &["--mu-from", "0.1", "--mu-to", "1", "--steps", "1"],
+            ),
             2,
             "'--steps <N>': 1 is not in 2..=1000000",
         ),
@@ -533,6 +503,29 @@ fn bad_input_exits_2_and_solver_failures_exit_1_with_one_line() {
             run.stderr
         );
     }
+}
+
+#[test]
+fn a_closed_pipe_ends_the_output_quietly() {
+    // As in `orthoslip solve ... | head -1`: far more output than a pipe holds.
+    let mut child = Command::new(env!("CARGO_BIN_EXE_orthoslip"))
+        .args(on_ply("solve", &["--mu", "0.3", "--points", "200000"]))
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .expect("start orthoslip");
+    let mut first = String::new();
+    BufReader::new(child.stdout.take().expect("stdout"))
+        .read_line(&mut first)
+        .expect("read a line");
+    let out = child.wait_with_output().expect("wait for orthoslip");
+    assert!(first.starts_with("material: "), "{first}");
+    assert_eq!(out.status.code(), Some(0));
+    assert!(
+        out.stderr.is_empty(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
 }
 
 #[test]

@@ -190,8 +190,7 @@ fn build_examples(source: &Path, work: &Path, prefix: &Path, static_link: bool) 
 
 #[test]
 fn install_and_consume() {
-    if std::env::var(SKIP_VAR).as_deref() == Ok("1") {
-        println!("packaging test SKIPPED ({SKIP_VAR}=1)");
+    if shell::skipped(SKIP_VAR, "packaging test") {
         return;
     }
     let missing = missing_tools();

@@ -68,8 +68,7 @@ fn timed<T>(what: &str, times: &mut Vec<(String, f64)>, step: impl FnOnce() -> T
 
 #[test]
 fn pip_install_then_pytest_and_the_readme_snippet() {
-    if std::env::var(SKIP_VAR).as_deref() == Ok("1") {
-        println!("Python test SKIPPED ({SKIP_VAR}=1)");
+    if shell::skipped(SKIP_VAR, "Python test") {
         return;
     }
     let cc = std::env::var("CC").unwrap_or_else(|_| "cc".into());

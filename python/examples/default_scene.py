@@ -14,7 +14,8 @@ print(f"orthoslip {orthoslip.__version__} (Python)")
 print(f"ply: E11 = {e11:g} Pa, E22 = {e22:g} Pa, G12 = {g12:g} Pa, nu12 = {nu12:g}, "
       f"plane stress; mu = {mu:g}")
 ply = orthoslip.Material.plane_stress(e11, e22, g12, nu12)
-print("effective: E = {:.17g}, nu = {:.17g}, delta = {:.17g}, kappa = {:.17g}".format(*ply.constants))
+print("effective: E = {:.17g}, nu = {:.17g}, delta = {:.17g}, kappa = {:.17g}"
+      .format(*ply.constants))
 print("green: A = {:.17g}, B = {:.17g}, C = {:.17g}".format(*ply.green))
 
 solution = orthoslip.Contact(ply, mu, method="auto").solve()

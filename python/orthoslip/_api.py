@@ -13,9 +13,6 @@ from ._ffi import check, ffi, get, lib, new_handle
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
 
-__all__ = ["Method", "Effective", "Green", "Material", "Contact", "Solution"]
-
-
 class Method(enum.IntEnum):
     """Solution methods (the C ABI's ``orthoslip_method`` values)."""
 
@@ -152,7 +149,10 @@ class Contact:
     ) -> None:
         value = _method_value(method)
         handle = new_handle(
-            "orthoslip_contact", lib.orthoslip_contact_free, lib.orthoslip_contact_new, material._handle
+            "orthoslip_contact",
+            lib.orthoslip_contact_free,
+            lib.orthoslip_contact_new,
+            material._handle,
         )
         check(lib.orthoslip_contact_set_friction(handle, mu))
         check(lib.orthoslip_contact_set_method(handle, value))

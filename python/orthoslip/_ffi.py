@@ -16,24 +16,10 @@ with the library's name and message; mapping it to its own class is one line in
 
 from __future__ import annotations
 
-from typing import Any, Callable
+from collections.abc import Callable
+from typing import Any
 
-from ._native import ffi, lib
-
-__all__ = [
-    "ffi",
-    "lib",
-    "OrthoslipError",
-    "NullPointerError",
-    "InvalidArgumentError",
-    "InadmissibleMaterialError",
-    "NoConvergenceError",
-    "ToleranceNotMetError",
-    "InternalError",
-    "check",
-    "new_handle",
-    "get",
-]
+from ._native import ffi as ffi, lib as lib  # re-exported: the one home of the bindings
 
 
 class OrthoslipError(Exception):
@@ -88,7 +74,8 @@ _EXCEPTIONS: dict[str, type[OrthoslipError]] = {
 
 def status_name(status: int) -> str:
     """The library's name for a status code (``"ORTHOSLIP_STATUS_UNKNOWN"`` if it has none)."""
-    return ffi.string(lib.orthoslip_status_string(status)).decode()
+    name: bytes = ffi.string(lib.orthoslip_status_string(status))
+    return name.decode()
 
 
 def last_error_message() -> str:
@@ -96,7 +83,8 @@ def last_error_message() -> str:
     length = lib.orthoslip_last_error_message(ffi.NULL, 0)
     buf = ffi.new("char[]", length + 1)
     lib.orthoslip_last_error_message(buf, length + 1)
-    return ffi.string(buf).decode(errors="replace")
+    message: bytes = ffi.string(buf)
+    return message.decode(errors="replace")
 
 
 def check(status: int) -> None:
@@ -106,7 +94,9 @@ def check(status: int) -> None:
         raise _EXCEPTIONS.get(name, OrthoslipError)(status, name, last_error_message())
 
 
-def new_handle(ctype: str, free: Callable[[Any], None], create: Callable[..., int], *args: Any) -> Any:
+def new_handle(
+    ctype: str, free: Callable[[Any], None], create: Callable[..., int], *args: Any
+) -> Any:
     """Calls ``create(*args, out)`` for a ``ctype **out`` handle and returns the handle, freed
     by ``free`` when it is garbage collected."""
     out = ffi.new(f"{ctype} **")

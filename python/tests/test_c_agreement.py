@@ -6,7 +6,7 @@ from __future__ import annotations
 import subprocess
 import sys
 from pathlib import Path
-from typing import Callable
+from collections.abc import Callable
 
 import numpy as np
 import pytest
@@ -94,7 +94,8 @@ def test_default_scene_script_prints_what_the_c_example_prints(build_c) -> None:
     (the C API) on the same library: every line equal but the banner naming the language."""
     c_lines = subprocess.run([str(build_c(REPO / "c_examples" / "default_scene.c"))],
                              capture_output=True, text=True, check=True).stdout.splitlines()
-    py_lines = subprocess.run([sys.executable, str(REPO / "python" / "examples" / "default_scene.py")],
+    script = REPO / "python" / "examples" / "default_scene.py"
+    py_lines = subprocess.run([sys.executable, str(script)],
                               capture_output=True, text=True, check=True).stdout.splitlines()
     assert c_lines[0].endswith("(C)") and py_lines[0].endswith("(Python)")
     assert py_lines[0].removesuffix("(Python)") == c_lines[0].removesuffix("(C)")

@@ -13,6 +13,15 @@ pub fn library_target_dir() -> PathBuf {
     PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("library-target")
 }
 
+/// Whether the environment variable `var` is set to 1, which skips the slow `test`.
+pub fn skipped(var: &str, test: &str) -> bool {
+    let skip = std::env::var(var).as_deref() == Ok("1");
+    if skip {
+        println!("{test} SKIPPED ({var}=1)");
+    }
+    skip
+}
+
 /// A command with LD_LIBRARY_PATH removed: `cargo test` points it at target/<profile>/deps,
 /// which holds another liborthoslip.so that must not stand in for the installed one.
 pub fn command(program: impl AsRef<std::ffi::OsStr>) -> Command {
