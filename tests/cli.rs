@@ -215,8 +215,8 @@ fn json_output_parses_and_holds_every_material_kind() {
 }
 
 #[test]
-fn an_uncertified_error_estimate_is_infinite_in_text_and_null_in_json() {
-    // b* = 0.025 lies outside the certified table: Goodman's estimate is +infinity.
+fn an_error_estimate_outside_the_table_is_infinite_in_text_and_null_in_json() {
+    // b* = 0.025 lies outside the model-error table: Goodman's estimate is +infinity.
     let args = ["solve", "--effective", "1", "0.95", "1", "1", "--mu", "0.3"];
     let goodman = [&args[..], &["--method", "goodman", "--points", "0"]].concat();
     let table = orthoslip(&goodman);
@@ -470,7 +470,7 @@ fn bad_input_exits_2_and_solver_failures_exit_1_with_one_line() {
         (
             solve(&["--mu", "1e-4", "--method", "coupled"]),
             1,
-            "no convergence: kappa >= 0 down to c = 2e-35",
+            "no convergence: defect >= 0 down to c = 2e-35",
         ),
         (
             vec![

@@ -19,9 +19,9 @@ class Method(enum.IntEnum):
     AUTO = lib.ORTHOSLIP_METHOD_AUTO
     """The cheapest method whose error estimate meets the tolerance."""
     GOODMAN = lib.ORTHOSLIP_METHOD_GOODMAN
-    """Goodman's approximation (closed form; certified model error as the estimate)."""
+    """Goodman's approximation (closed form; its empirical model-error bound as the estimate)."""
     SPENCE = lib.ORTHOSLIP_METHOD_SPENCE
-    """Spence's approximation (closed form; certified model error as the estimate)."""
+    """Spence's approximation (closed form; its empirical model-error bound as the estimate)."""
     COUPLED = lib.ORTHOSLIP_METHOD_COUPLED
     """The high-order solver of the full coupled equations."""
     LCP = lib.ORTHOSLIP_METHOD_LCP
@@ -215,7 +215,7 @@ class Solution:
         slip_width: 1 - c with full relative accuracy (never computed as 1 - c).
         method: the method that produced the solution (never ``Method.AUTO``).
         error_estimate: the estimated |c - c_exact| against the exact coupled problem
-            (``inf`` where no bound is certified for an approximation).
+            (``inf`` where the model-error table gives no bound for an approximation).
     """
 
     def __init__(self, handle: Any) -> None:

@@ -168,9 +168,9 @@ impl MaterialArgs {
 pub enum MethodArg {
     /// The cheapest method whose error estimate meets --tol.
     Auto,
-    /// Goodman's approximation (closed form; certified model error as estimate).
+    /// Goodman's approximation (closed form; its empirical model-error bound as estimate).
     Goodman,
-    /// Spence's approximation (closed form; certified model error as estimate).
+    /// Spence's approximation (closed form; its empirical model-error bound as estimate).
     Spence,
     /// The high-order solver of the full coupled equations.
     Coupled,
@@ -208,7 +208,7 @@ pub enum Format {
     Table,
     /// The table as CSV (header row), preceded by `# name = value` comment lines.
     Csv,
-    /// One JSON object; non-finite numbers (e.g. an uncertified error estimate, +inf) and
+    /// One JSON object; non-finite numbers (e.g. an error estimate outside the model-error table, +inf) and
     /// failed values are null.
     Json,
 }
