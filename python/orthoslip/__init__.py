@@ -25,6 +25,7 @@ from ._ffi import (
     NoConvergenceError,
     NullPointerError,
     OrthoslipError,
+    PanicError,
     ToleranceNotMetError,
 )
 
@@ -46,4 +47,5 @@ __all__ = [
     "NoConvergenceError",
     "ToleranceNotMetError",
     "InternalError",
+    "PanicError",
 ]

@@ -59,7 +59,12 @@ class ToleranceNotMetError(OrthoslipError):
 
 
 class InternalError(OrthoslipError):
-    """A bug in the library (an internal invariant failed or a panic was caught)."""
+    """A bug in the library: an internal invariant failed (or, as :class:`PanicError`, a
+    panic was caught at the C boundary)."""
+
+
+class PanicError(InternalError):
+    """A bug in the library: a panic caught at the C boundary."""
 
 
 _EXCEPTIONS: dict[str, type[OrthoslipError]] = {
@@ -69,6 +74,7 @@ _EXCEPTIONS: dict[str, type[OrthoslipError]] = {
     "ORTHOSLIP_ERROR_NO_CONVERGENCE": NoConvergenceError,
     "ORTHOSLIP_ERROR_TOLERANCE_NOT_MET": ToleranceNotMetError,
     "ORTHOSLIP_ERROR_INTERNAL": InternalError,
+    "ORTHOSLIP_ERROR_PANIC": PanicError,
 }
 
 
