@@ -23,6 +23,8 @@ mod smoothing_newton;
 mod stick_edge;
 
 use crate::error::{Error, Result};
+use crate::field::{Expand, Expansion, Family, Panel};
+use crate::numerics::cauchy::Weight;
 use crate::problem::{Coupling, Profile, StickEdge, validate_tolerance};
 use discretisation::Grid;
 use smoothing_newton::Controls;
@@ -278,6 +280,37 @@ impl LcpSolution {
         let h = self.grid.h;
         let (a, b) = (i as f64 * h, (i + 1) as f64 * h);
         ((1.0 - a).powf(1.0 - g) - (1.0 - b).powf(1.0 - g)) / ((1.0 - g) * h)
+    }
+}
+
+/// The LCP's own tractions: constant on each grid panel (its discretisation), except that the
+/// last panel carries its edge model p_{n-1} (1 - x)^(-g) / mean of (1 - x)^(-g) (the form
+/// `tractions` uses there, with the same panel force h p_{n-1}): on [-1, 1],
+/// (1 - x)^(-g) = (h/2)^(-g) (1 - t)^(-g), so the coefficient is p_{n-1} (1 - g) 2^g.
+impl Expand for LcpSolution {
+    fn expansion(&self) -> Expansion {
+        let (n, h) = (self.grid.n, self.grid.h);
+        let g = self.coupling.edge_exponent();
+        let edge = (1.0 - g) * g.exp2();
+        let panels = (0..n)
+            .map(|i| {
+                let (weight, scale) = if i + 1 == n {
+                    (Weight::Right(-g), edge)
+                } else {
+                    (Weight::One, 1.0)
+                };
+                Panel {
+                    a: i as f64 * h,
+                    b: if i + 1 == n { 1.0 } else { (i + 1) as f64 * h },
+                    families: vec![Family {
+                        weight,
+                        p: vec![scale * self.p[i]],
+                        q: vec![scale * self.q[i]],
+                    }],
+                }
+            })
+            .collect();
+        Expansion { panels }
     }
 }
 
