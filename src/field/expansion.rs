@@ -304,16 +304,24 @@ mod tests {
             ] {
                 let e = sample(profile, Exponents { edge, stick: 0.5 });
                 let c = profile.edge().c;
+                // relative to 1e-12 plus the conditioning of p(x) in x next to the punch edge:
+                // the rounding of x (eps) moves p by ~ eps / (1 - x) relative (c = 1 - 7e-6 at
+                // mu = 2)
                 let mut worst: f64 = 0.0;
                 for i in 0..2000 {
                     let x = (i as f64 + 0.5) / 2000.0;
                     for x in [x, c * (1.0 - 1e-9 * (i + 1) as f64)] {
                         let (p, q) = profile.half_line_tractions(x);
                         let (pe, qe) = e.tractions(x);
-                        worst = worst.max((pe - p).abs() / p).max((qe - q).abs() / p);
+                        let allowed = 1e-12 + 2.0 * f64::EPSILON / (1.0 - x);
+                        let r = ((pe - p).abs() / p).max((qe - q).abs() / p) / allowed;
+                        worst = worst.max(r);
                     }
                 }
-                assert!(worst < 1e-12, "{k:?}: worst relative error {worst:e}");
+                assert!(
+                    worst < 1.0,
+                    "{k:?}: worst relative error / allowed {worst:e}"
+                );
                 let (kk, gg) = e.edge_intensity().unwrap();
                 let norm = 1.0 / crate::numerics::special::beta(0.5, 1.0 - edge);
                 assert!((gg - edge).abs() < 1e-15);

@@ -215,6 +215,31 @@ impl Transforms {
     }
 }
 
+/// A point z = x + w of the plane given as a point x of the axis and a small offset w, so
+/// that its distance to a panel end keeps its relative accuracy: (b - x) - w, where x + w
+/// rounded would lose it (kappa < 1 puts z at x -+ delta sqrt((1 - kappa) / 2) y, beside an
+/// end when x is at it).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Point {
+    pub(crate) x: f64,
+    pub(crate) w: C64,
+}
+
+impl Point {
+    /// x + w.
+    fn z(self) -> C64 {
+        self.w + self.x
+    }
+
+    /// -z.
+    fn neg(self) -> Point {
+        Point {
+            x: -self.x,
+            w: -self.w,
+        }
+    }
+}
+
 /// The expansion's panels prepared for transforms at any point.
 #[derive(Clone, Debug)]
 pub(crate) struct Kernel {
@@ -295,8 +320,11 @@ impl KernelPanel {
 
     /// int over this panel of q(s) ln|x - s| ds for real x.
     fn log_q(&self, x: f64, scratch: &mut [C64]) -> f64 {
-        let z = C64::new(x, -0.0);
-        match KernelPanel::band(self.rho(z)) {
+        let z = Point {
+            x,
+            w: C64::new(0.0, -0.0),
+        };
+        match KernelPanel::band(self.rho(z.z())) {
             Some(b) => {
                 let r = &self.far[b];
                 r.x.iter()
@@ -325,19 +353,23 @@ impl KernelPanel {
         BANDS.iter().rposition(|&lo| rho >= lo)
     }
 
-    /// The local point of z, the distances to the ends from the physical ones (a point of
-    /// the axis exactly at an end is moved [`AT_END`] below it).
-    fn local(&self, z: C64) -> Local {
-        let mut omz = (C64::new(self.b, 0.0) - z) / self.h;
-        let mut opz = (z - self.a) / self.h;
+    /// The local point of z, the distances to the ends from the physical ones, (b - x) - w
+    /// and (x - a) + w, formed part by part so that they keep their accuracy next to an end
+    /// and the sign of a zero imaginary part (a point of the axis exactly at an end is moved
+    /// [`AT_END`] off it, to that side).
+    fn local(&self, z: Point) -> Local {
+        let Point { x, w } = z;
+        let mut omz = C64::new((self.b - x) - w.re, -w.im) / self.h;
+        let mut opz = C64::new((x - self.a) + w.re, w.im) / self.h;
+        let off = AT_END.copysign(w.im);
         if omz.re == 0.0 && omz.im == 0.0 {
-            omz.im = AT_END;
+            omz.im = -off;
         }
         if opz.re == 0.0 && opz.im == 0.0 {
-            opz.im = -AT_END;
+            opz.im = off;
         }
         Local {
-            zeta: (z - self.m) / self.h,
+            zeta: C64::new((x - self.m) + w.re, w.im) / self.h,
             omz,
             opz,
         }
@@ -347,7 +379,7 @@ impl KernelPanel {
     /// closed form; `scratch` holds two vectors of the largest degree.
     fn near_sums(
         &self,
-        z: C64,
+        z: Point,
         deriv: bool,
         scratch: &mut [[C64; MAX_DEGREE + 1]; 2],
     ) -> Transforms {
@@ -511,10 +543,10 @@ impl Kernel {
 
     /// G_p(z), G_q(z) and, when `deriv`, G_p'(z), G_q'(z), for z off the segment [-1, 1] or
     /// on it (the limit from below when Im z = -0.0).
-    pub(crate) fn transforms(&self, z: C64, deriv: bool) -> Transforms {
-        if z.re < 0.0 {
+    pub(crate) fn transforms(&self, z: Point, deriv: bool) -> Transforms {
+        if z.z().re < 0.0 {
             // G_p odd, G_q even (so G_p' even, G_q' odd)
-            let t = self.transforms(-z, deriv);
+            let t = self.transforms(z.neg(), deriv);
             return Transforms {
                 p: -t.p,
                 q: t.q,
@@ -522,8 +554,8 @@ impl Kernel {
                 dq: -t.dq,
             };
         }
-        let mut t = if z.norm() >= FAR_RADIUS {
-            self.far_field(z, deriv)
+        let mut t = if z.z().norm() >= FAR_RADIUS {
+            self.far_field(z.z(), deriv)
         } else {
             self.panel_sums(z, deriv)
         };
@@ -536,18 +568,19 @@ impl Kernel {
     }
 
     /// Sum over the panels and their mirrors (times pi), Re z >= 0.
-    fn panel_sums(&self, z: C64, deriv: bool) -> Transforms {
+    fn panel_sums(&self, point: Point, deriv: bool) -> Transforms {
         let zero = C64::new(0.0, 0.0);
         let mut scratch = [[zero; MAX_DEGREE + 1], [zero; MAX_DEGREE + 1]];
         let mut t = Transforms::zero();
+        let z = point.z();
         for panel in &self.panels {
             match KernelPanel::band(panel.rho(z)) {
                 Some(b) => panel.far_pair(z, b, deriv, &mut t),
                 None => {
-                    let own = panel.near_sums(z, deriv, &mut scratch);
+                    let own = panel.near_sums(point, deriv, &mut scratch);
                     let mirror = match KernelPanel::band(panel.rho(-z)) {
                         Some(b) => panel.far_sums(-z, b, deriv),
-                        None => panel.near_sums(-z, deriv, &mut scratch),
+                        None => panel.near_sums(point.neg(), deriv, &mut scratch),
                     };
                     // g_p(z) - g_p(-z), g_q(z) + g_q(-z); derivatives in z
                     t.p += own.p - mirror.p;

@@ -45,7 +45,7 @@ pub(crate) use expansion::{Expand, Expansion, Exponents, Family, Panel, fit, sam
 
 use crate::material::Effective;
 use crate::numerics::cauchy::C64;
-use kernel::Kernel;
+use kernel::{Kernel, Point};
 
 /// |kappa - 1| up to which the roots are taken as the double root.
 const DOUBLE_ROOT: f64 = 1e-10;
@@ -137,10 +137,20 @@ impl Field {
         let zero = C64::new(0.0, 0.0);
         let (mp, mq, dp, dq) = if y == 0.0 {
             // the limit from inside: both points at x - i0, d_f = 0
-            let t = self.kernel.transforms(C64::new(x, -0.0), false);
+            let t = self.kernel.transforms(
+                Point {
+                    x,
+                    w: C64::new(0.0, -0.0),
+                },
+                false,
+            );
             (t.p, t.q, zero, zero)
         } else if let Some(half) = r.half {
-            let point = |beta: C64| C64::new(x - (beta.im * y), beta.re * y);
+            // x + i beta y, the offset apart (see [`Point`])
+            let point = |beta: C64| Point {
+                x,
+                w: C64::new(-(beta.im * y), beta.re * y),
+            };
             let mean = C64::new(r.mean, 0.0);
             let t1 = self.kernel.transforms(point(mean + half), false);
             let t2 = self.kernel.transforms(point(mean - half), false);
@@ -152,7 +162,11 @@ impl Field {
                 (t1.q - t2.q) * inv,
             )
         } else {
-            let t = self.kernel.transforms(C64::new(x, r.mean * y), true);
+            let point = Point {
+                x,
+                w: C64::new(0.0, r.mean * y),
+            };
+            let t = self.kernel.transforms(point, true);
             let iy = C64::new(0.0, y);
             (t.p, t.q, iy * t.dp, iy * t.dq)
         };
