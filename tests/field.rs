@@ -74,14 +74,16 @@ fn gauss(a: f64, b: f64) -> impl Iterator<Item = (f64, f64)> {
         .map(move |(t, w)| (m + h * t, h * w))
 }
 
-/// int syy dx = -1 and int sxy dx = 0 over y = -h: 400 panels on |x| < 2, and beyond
-/// x = +-2/s (the integrand decays like 1/x^2, smooth in s).
+/// int syy dx = -1 and int sxy dx = 0 over y = -h (for LCP: the same on every line, the
+/// equilibrium of the layer between them): 400 panels on |x| < 2, and beyond x = +-2/s (the
+/// integrand decays like 1/x^2, smooth in s).
 #[test]
 fn resultant_on_a_line_is_the_punch_load() {
     for (name, m) in materials() {
         for method in METHODS {
             let s = solve(m, 0.3, method);
-            for h in [0.05, 0.7] {
+            let mut first: Option<(f64, f64)> = None;
+            for h in [0.05, 0.7, 3.0] {
                 let (mut fx, mut fy) = (0.0, 0.0);
                 let mut add = |x: f64, w: f64| {
                     let st = stress(&s, x, -h);
@@ -100,10 +102,20 @@ fn resultant_on_a_line_is_the_punch_load() {
                         add(-x, w * dx);
                     }
                 }
+                // LCP's tractions (interpolated between its grid midpoints) carry a force
+                // 1 + O(h^2) of their own: the lines must agree with each other
+                let (load, allowed) = if method == Method::Lcp {
+                    (*first.get_or_insert((fx, fy)), 1e-9)
+                } else {
+                    ((0.0, -1.0), 1e-9)
+                };
                 assert!(
-                    (fy + 1.0).abs() < 1e-9 && fx.abs() < 1e-9,
-                    "{name} {method:?} h {h}: resultant ({fx:e}, {fy})"
+                    (fy - load.1).abs() < allowed && (fx - load.0).abs() < allowed,
+                    "{name} {method:?} h {h}: resultant ({fx:e}, {fy}) vs {load:?}"
                 );
+                if method == Method::Lcp {
+                    assert!((fy + 1.0).abs() < 1e-3 && fx.abs() < 1e-12);
+                }
             }
         }
     }
@@ -166,13 +178,12 @@ fn equilibrium_and_compatibility() {
     }
 }
 
-/// At y = 0: syy = -p and sxy = q (the expansion of each method's own tractions: for LCP the
-/// panel values, so only the smooth methods are compared with `tractions`), and the field
-/// tends to its surface values (continuity up to the surface, also across x = c).
+/// At y = 0: syy = -p and sxy = q (each method's own tractions), and the field tends to its
+/// surface values (continuity up to the surface, also across x = c).
 #[test]
 fn surface_limits() {
     for (name, m) in materials() {
-        for method in [Method::Goodman, Method::Spence, Method::Coupled] {
+        for method in METHODS {
             let s = solve(m, 0.3, method);
             let c = s.c();
             for x in [0.0, 0.3 * c, 0.9 * c, c, 0.5 * (1.0 + c), 0.99, -0.7, 1.2] {
@@ -183,8 +194,9 @@ fn surface_limits() {
                 let coupled = method == Method::Coupled;
                 // at c the reference is the limit from the stick side, where p is smooth, and
                 // q = mu p there; COUPLED's one-sided limits differ by its discretisation error
-                // (~2e-8: the field at c takes their mean), the others' by rounding
-                let (p, q, allowed) = if x == c {
+                // (~2e-8: the field at c takes their mean), the others' by rounding (LCP's
+                // interpolated tractions are continuous, but q != mu p at its c)
+                let (p, q, allowed) = if x == c && method != Method::Lcp {
                     let p = s.tractions(c - 1e-14).0;
                     (p, 0.3 * p, if coupled { 1e-7 } else { 1e-11 })
                 } else {

@@ -23,7 +23,7 @@ mod smoothing_newton;
 mod stick_edge;
 
 use crate::error::{Error, Result};
-use crate::field::{Expand, Expansion, Family, Panel};
+use crate::field::{Expand, Expansion, Family, Panel, fit};
 use crate::numerics::cauchy::Weight;
 use crate::problem::{Coupling, Profile, StickEdge, validate_tolerance};
 use discretisation::Grid;
@@ -283,30 +283,44 @@ impl LcpSolution {
     }
 }
 
-/// The LCP's own tractions: constant on each grid panel (its discretisation), except that the
-/// last panel carries its edge model p_{n-1} (1 - x)^(-g) / mean of (1 - x)^(-g) (the form
-/// `tractions` uses there, with the same panel force h p_{n-1}): on [-1, 1],
-/// (1 - x)^(-g) = (h/2)^(-g) (1 - t)^(-g), so the coefficient is p_{n-1} (1 - g) 2^g.
+/// The LCP's tractions as `tractions` reports them ([`Profile::half_line_tractions`]): the
+/// regular parts p / w, q / w interpolated linearly between the grid midpoints, times
+/// w = (1 - x)^(-g). One panel between each two midpoints (and [0, mid_0], where q ramps to
+/// q(0) = 0), fitted in Legendre series (w is analytic there); on the last, [mid_{n-1}, 1],
+/// the regular parts are constant and, on [-1, 1], (1 - x)^(-g) = r^(-g) (1 - t)^(-g) with r
+/// the panel's half-width: one family weighted (1 - t)^(-g).
 impl Expand for LcpSolution {
     fn expansion(&self) -> Expansion {
-        let (n, h) = (self.grid.n, self.grid.h);
+        let n = self.grid.n;
+        let mut breaks = vec![0.0];
+        breaks.extend((0..n).map(|j| self.grid.mid(j)));
+        breaks.push(1.0);
         let g = self.coupling.edge_exponent();
-        let edge = (1.0 - g) * g.exp2();
-        let panels = (0..n)
-            .map(|i| {
-                let (weight, scale) = if i + 1 == n {
-                    (Weight::Right(-g), edge)
+        let panels = breaks
+            .windows(2)
+            .map(|w| {
+                let (a, b) = (w[0], w[1]);
+                let (m, r) = (0.5 * (a + b), 0.5 * (b - a));
+                let family = if b == 1.0 {
+                    let j = n - 1;
+                    let scale = r.powf(-g) / self.weight_average(j);
+                    Family {
+                        weight: Weight::Right(-g),
+                        p: vec![scale * self.p[j]],
+                        q: vec![scale * self.q[j]],
+                    }
                 } else {
-                    (Weight::One, 1.0)
+                    let at = |t: f64| self.half_line_tractions(m + r * t);
+                    Family {
+                        weight: Weight::One,
+                        p: fit(|t| at(t).0),
+                        q: fit(|t| at(t).1),
+                    }
                 };
                 Panel {
-                    a: i as f64 * h,
-                    b: if i + 1 == n { 1.0 } else { (i + 1) as f64 * h },
-                    families: vec![Family {
-                        weight,
-                        p: vec![scale * self.p[i]],
-                        q: vec![scale * self.q[i]],
-                    }],
+                    a,
+                    b,
+                    families: vec![family],
                 }
             })
             .collect();
