@@ -342,9 +342,11 @@ impl KernelPanel {
         }
     }
 
-    /// Bernstein parameter of z for this panel.
+    /// Bernstein parameter of z for this panel (distances by sqrt, not the slower hypot of
+    /// `norm`: z is never near overflow here).
     fn rho(&self, z: C64) -> f64 {
-        let s = ((z - self.a).norm() + (z - self.b).norm()) / (2.0 * self.h);
+        let dist = |e: f64| ((z.re - e) * (z.re - e) + z.im * z.im).sqrt();
+        let s = (dist(self.a) + dist(self.b)) / (2.0 * self.h);
         s + (s * s - 1.0).max(0.0).sqrt()
     }
 
@@ -494,7 +496,7 @@ impl Kernel {
 
     /// The moment series at |z| >= FAR_RADIUS (times pi), with as many terms as |z| needs.
     fn far_field(&self, z: C64, deriv: bool) -> Transforms {
-        let terms = ((16.0 / z.norm().log10()) / 2.0).ceil() as usize + 1;
+        let terms = ((32.0 / z.norm_sqr().log10()) / 2.0).ceil() as usize + 1;
         let terms = terms.min(MOMENTS / 2);
         let inv = z.inv();
         let w = inv * inv;
@@ -554,7 +556,7 @@ impl Kernel {
                 dq: -t.dq,
             };
         }
-        let mut t = if z.z().norm() >= FAR_RADIUS {
+        let mut t = if z.z().norm_sqr() >= FAR_RADIUS * FAR_RADIUS {
             self.far_field(z.z(), deriv)
         } else {
             self.panel_sums(z, deriv)
@@ -570,17 +572,20 @@ impl Kernel {
     /// Sum over the panels and their mirrors (times pi), Re z >= 0.
     fn panel_sums(&self, point: Point, deriv: bool) -> Transforms {
         let zero = C64::new(0.0, 0.0);
-        let mut scratch = [[zero; MAX_DEGREE + 1], [zero; MAX_DEGREE + 1]];
+        // scratch for the near field, filled only when a panel is near
+        let mut scratch = None;
         let mut t = Transforms::zero();
         let z = point.z();
         for panel in &self.panels {
             match KernelPanel::band(panel.rho(z)) {
                 Some(b) => panel.far_pair(z, b, deriv, &mut t),
                 None => {
-                    let own = panel.near_sums(point, deriv, &mut scratch);
+                    let scratch =
+                        scratch.get_or_insert([[zero; MAX_DEGREE + 1], [zero; MAX_DEGREE + 1]]);
+                    let own = panel.near_sums(point, deriv, scratch);
                     let mirror = match KernelPanel::band(panel.rho(-z)) {
                         Some(b) => panel.far_sums(-z, b, deriv),
-                        None => panel.near_sums(point.neg(), deriv, &mut scratch),
+                        None => panel.near_sums(point.neg(), deriv, scratch),
                     };
                     // g_p(z) - g_p(-z), g_q(z) + g_q(-z); derivatives in z
                     t.p += own.p - mirror.p;
