@@ -2,15 +2,22 @@
 //! cargo) and installs it into a temporary prefix; `c_examples/` is then configured and built
 //! as an outside project against that prefix, once with the shared and once with the static
 //! library (the second time after moving the prefix, which checks that the package is
-//! relocatable); a C consumer is built through pkg-config; the Python ctypes script runs.
-//! Every consumer must print the same stick half-width `c` and the same p, q table.
+//! relocatable); a C consumer is built through pkg-config. Every consumer must print the same
+//! stick half-width `c` and the same p, q table. Then the README's C/CMake, pkg-config, C++
+//! and Fortran snippets run against the moved prefix and must print that c too. (The Python
+//! route is checked by tests/python.rs.)
 //!
-//! Needs cmake, C, C++ and Fortran compilers, pkg-config, python3 and binutils. A missing
-//! tool fails the test with what to install, unless ORTHOSLIP_SKIP_PACKAGING=1.
+//! Needs cmake, C, C++ and Fortran compilers, pkg-config, bash and binutils. A missing tool
+//! fails the test with what to install, unless ORTHOSLIP_SKIP_PACKAGING=1.
+
+mod readme;
+mod shell;
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
 use std::time::Instant;
+
+use shell::{command, run};
 
 const SKIP_VAR: &str = "ORTHOSLIP_SKIP_PACKAGING";
 const VERSION: &str = env!("CARGO_PKG_VERSION");
@@ -24,47 +31,6 @@ const TABLE_ROWS: usize = 21;
 /// Agreement required between consumers (they all call the same library).
 const TOLERANCE: f64 = 1e-12;
 
-/// A command with LD_LIBRARY_PATH removed: `cargo test` points it at target/<profile>/deps,
-/// which holds another liborthoslip.so that must not stand in for the installed one.
-fn command(program: impl AsRef<std::ffi::OsStr>) -> Command {
-    let mut cmd = Command::new(program);
-    cmd.env_remove("LD_LIBRARY_PATH");
-    cmd
-}
-
-fn describe(cmd: &Command) -> String {
-    let mut words: Vec<String> = cmd
-        .get_envs()
-        .filter_map(|(k, v)| v.map(|v| format!("{}={}", k.to_string_lossy(), v.to_string_lossy())))
-        .collect();
-    words.push(cmd.get_program().to_string_lossy().into_owned());
-    words.extend(cmd.get_args().map(|a| a.to_string_lossy().into_owned()));
-    let mut line = words.join(" ");
-    if let Some(dir) = cmd.get_current_dir() {
-        line = format!("(cd {} && {line})", dir.display());
-    }
-    line
-}
-
-/// Runs `cmd`, printing it and its output; panics unless it exits successfully. Returns stdout.
-fn run(cmd: &mut Command) -> String {
-    let line = describe(cmd);
-    println!("$ {line}");
-    let start = Instant::now();
-    let out = cmd
-        .output()
-        .unwrap_or_else(|e| panic!("cannot start `{line}`: {e}"));
-    let stdout = String::from_utf8_lossy(&out.stdout).into_owned();
-    let stderr = String::from_utf8_lossy(&out.stderr);
-    print!("{stdout}");
-    if !stderr.is_empty() {
-        println!("[stderr]\n{stderr}");
-    }
-    println!("[{:.1} s, {}]", start.elapsed().as_secs_f64(), out.status);
-    assert!(out.status.success(), "`{line}` failed with {}", out.status);
-    stdout
-}
-
 /// Tools the route needs that are not on PATH, with the Debian package providing each.
 fn missing_tools() -> Vec<String> {
     let env_or = |var: &str, default: &str| std::env::var(var).unwrap_or_else(|_| default.into());
@@ -74,7 +40,7 @@ fn missing_tools() -> Vec<String> {
         (env_or("FC", "gfortran"), "gfortran"),
         ("cmake".into(), "cmake"),
         ("pkg-config".into(), "pkg-config"),
-        ("python3".into(), "python3"),
+        ("bash".into(), "bash"),
         ("readelf".into(), "binutils"),
         ("ldd".into(), "libc-bin"),
     ];
@@ -228,22 +194,21 @@ fn build_examples(source: &Path, work: &Path, prefix: &Path, static_link: bool) 
 
 #[test]
 fn install_and_consume() {
-    if std::env::var(SKIP_VAR).as_deref() == Ok("1") {
-        println!("packaging test SKIPPED ({SKIP_VAR}=1)");
+    if shell::skipped(SKIP_VAR, "packaging test") {
         return;
     }
     let missing = missing_tools();
     assert!(
         missing.is_empty(),
         "the packaging test needs: {}. Install them (Debian: apt-get install cmake g++ gfortran \
-         pkg-config python3 binutils) or set {SKIP_VAR}=1 to skip this test",
+         pkg-config binutils) or set {SKIP_VAR}=1 to skip this test",
         missing.join(", ")
     );
     let total = Instant::now();
     let source = Path::new(env!("CARGO_MANIFEST_DIR"));
     let work = Path::new(env!("CARGO_TARGET_TMPDIR")).join("packaging");
-    // The CMake build tree (with cargo's own target directory) is kept between runs so that
-    // only the first run pays for a cold cargo build; everything else starts fresh.
+    // The CMake build tree and cargo's target directory are kept between runs so that only
+    // the first run pays for a cold cargo build; everything else starts fresh.
     let build = work.join("build");
     let prefix = work.join("prefix");
     let moved = work.join("prefix-moved");
@@ -252,7 +217,15 @@ fn install_and_consume() {
 
     // 1. Root project: configure, build (cargo build --release), install.
     let mut configure = command("cmake");
-    configure.arg("-S").arg(source).arg("-B").arg(&build);
+    configure
+        .arg("-S")
+        .arg(source)
+        .arg("-B")
+        .arg(&build)
+        .arg(format!(
+            "-DORTHOSLIP_CARGO_TARGET_DIR={}",
+            shell::library_target_dir().display()
+        ));
     if let Some(cargo) = std::env::var_os("CARGO") {
         configure.arg(format!(
             "-DCARGO_EXECUTABLE={}",
@@ -304,8 +277,8 @@ fn install_and_consume() {
         ));
     }
 
-    // 3. The prefix moved elsewhere: static linking through the CMake package, a pkg-config
-    // build and Python find everything relative to the new location.
+    // 3. The prefix moved elsewhere: static linking through the CMake package and a pkg-config
+    // build find everything relative to the new location.
     std::fs::rename(&prefix, &moved).unwrap();
     let libdir = moved.join("lib");
     let statik = build_examples(source, &work, &moved, true);
@@ -347,19 +320,27 @@ fn install_and_consume() {
         &run(command(&exe).env("LD_LIBRARY_PATH", &libdir)),
     ));
 
-    let script = source.join("c_examples/default_scene.py");
-    let lib = libdir.join(SONAME);
-    scenes.push(parse_scene(
-        "python argv",
-        &run(command("python3").arg(&script).arg(&lib)),
-    ));
-    scenes.push(parse_scene(
-        "python ORTHOSLIP_LIB",
-        &run(command("python3").arg(&script).env("ORTHOSLIP_LIB", &lib)),
-    ));
+    // 4. The README's snippets for these routes, against the moved prefix.
+    let snippets = work.join("readme");
+    fresh_dir(&snippets);
+    std::fs::create_dir_all(&snippets).unwrap();
+    let mut script = readme::route("packaging").bash(&snippets);
+    script
+        .env_remove("LD_LIBRARY_PATH")
+        .env("PREFIX", &moved)
+        .env("ORTHOSLIP_SRC", source);
+    let readme_c = readme::printed_c(&run(&mut script));
+    assert_eq!(
+        readme_c.len(),
+        4,
+        "the README's C/CMake, pkg-config, C++ and Fortran snippets each print c"
+    );
 
-    // 4. Every consumer printed the same numbers.
+    // 5. Every consumer printed the same numbers.
     let reference = &scenes[0];
+    for (i, &c) in readme_c.iter().enumerate() {
+        assert_close(&format!("README snippet {i} c"), reference.c, c);
+    }
     for scene in &scenes {
         println!("{:>22}: c = {:.17}", scene.consumer, scene.c);
         assert_close(&format!("{} c", scene.consumer), reference.c, scene.c);
@@ -374,8 +355,9 @@ fn install_and_consume() {
         }
     }
     println!(
-        "packaging route: {} consumers agree, {:.1} s in total",
+        "packaging route: {} consumers and {} README snippets agree, {:.1} s in total",
         scenes.len(),
+        readme_c.len(),
         total.elapsed().as_secs_f64()
     );
 }

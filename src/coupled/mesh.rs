@@ -184,7 +184,7 @@ impl Panel {
 /// Panel break points as distances from c in units of sigma = min(c, 1 - c): stick panels
 /// end at c - sigma stick[k] (the central panel takes the rest), slip panels at
 /// c + sigma slip[k] (the end panel takes the rest). Fixed while c is refined, so that the
-/// root function kappa(c) is smooth.
+/// root function defect(c) is smooth.
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct Layout {
     stick: Vec<f64>,

@@ -8,24 +8,24 @@
 //!   wrong-c modes |x - c|^(g-1) (`system`); all singular integrals are evaluated in closed
 //!   form or to rounding (`numerics::cauchy`), so the error decays geometrically in
 //!   the order n;
-//! - c is the root of kappa(c), the coefficient of q's (c - x)^(g-1) mode (bounded q at c is
-//!   the compatibility condition), found in t = ln(c / (1 - c)) so that c ~ 1e-20 and
+//! - c is the root of defect(c), the coefficient of q's (c - x)^(g-1) mode (bounded q at c is
+//!   the compatibility condition), found in lc = ln(c / (1 - c)) so that c ~ 1e-20 and
 //!   1 - c ~ 1e-12 are both carried to full relative accuracy;
 //! - the order is raised (4, then 6, 8, 11, 13, 16, ...) until two successive orders agree
 //!   on c within the tolerance (twice their difference plus both roots' location
 //!   uncertainties) and on the tractions within max(100 tol, 1e-9). Each order starts
 //!   from the previous order's root and slope: one secant step, usually two solves.
 //!
-//! Which root: kappa < 0 for small c (checked at a c far below Goodman's estimate, walking
-//! down until it is; never above c = 1/2), then c is increased in t (steps of 1 to 3, a
-//! little beyond the linearly extrapolated zero) until kappa (at the cheap order 4) changes
+//! Which root: defect < 0 for small c (checked at a c far below Goodman's estimate, walking
+//! down until it is; never above c = 1/2), then c is increased in lc (steps of 1 to 3, a
+//! little beyond the linearly extrapolated zero) until defect (at the cheap order 4) changes
 //! sign: the first sign change met from c = 0 brackets the physical root (the one
 //! continuous in mu from small friction); a bracket wider than 1 is bisected, then Brent's
 //! method refines the root at order 4 (if a higher order loses it, the search is redone at
 //! that order). The solution is checked for |q| <= mu p on the stick zone before it is
 //! returned.
 //!
-//! Range: `T_MIN` < t < `T_MAX`, i.e. c > 2e-35 and 1 - c > 4e-18 (outside it
+//! Range: `T_MIN` < lc < `T_MAX`, i.e. c > 2e-35 and 1 - c > 4e-18 (outside it
 //! NoConvergence says so); the number of panels grows like log(1 / min(c, 1 - c)). A solve
 //! is 6-9 cheap order-4 solves, then about two column-pivoted least-squares solves per order
 //! (100-350 unknowns at the last); `cargo run --release --example coupled_timing` measures
@@ -45,24 +45,24 @@ use crate::problem::{Coupling, Profile, StickEdge, validate_tolerance};
 use mesh::{Layout, Pt};
 use system::{Constants, Discrete, Families, solve_fixed};
 
-/// The range of t = ln(c / (1 - c)) the first-root scan covers: c = e^-80 = 1.8e-35 up to
+/// The range of lc = ln(c / (1 - c)) the first-root scan covers: c = e^-80 = 1.8e-35 up to
 /// 1 - c = e^-40 = 4.2e-18 (roughly the smallest c and 1 - c the panel layouts resolve).
 const T_MIN: f64 = -80.0;
 const T_MAX: f64 = 40.0;
 
-/// Range of Goodman's stick edge, in t, as the start of the scan.
+/// Range of Goodman's stick edge, in lc, as the start of the scan.
 const GUESS_RANGE: (f64, f64) = (-60.0, 30.0);
 
-/// Steps down from the start before the scan gives up on finding kappa < 0.
+/// Steps down from the start before the scan gives up on finding defect < 0.
 const MAX_STEPS_DOWN: usize = 30;
 
-/// Smallest and largest step in t = ln(c / (1 - c)) of the scan for the first root (the
+/// Smallest and largest step in lc = ln(c / (1 - c)) of the scan for the first root (the
 /// roots near full stick repeat every pi / eps >= 12 in ln(1 - c) for b* < 0.99, so no step
 /// holds two of them); in between, the step goes a little beyond the linearly predicted zero.
 const SCAN_STEP: f64 = 1.0;
 const SCAN_MAX_STEP: f64 = 3.0;
 
-/// Order of the scan for the first sign change of kappa (only its sign is used).
+/// Order of the scan for the first sign change of defect (only its sign is used).
 const SCAN_ORDER: usize = 4;
 
 /// Two successive orders must also agree on the tractions to TRACTION_RATIO times the
@@ -77,11 +77,11 @@ const TRACTION_FLOOR: f64 = 1e-9;
 /// Factor on the difference of two successive orders' c in the error estimate.
 const ORDER_SAFETY: f64 = 2.0;
 
-/// Tolerances below which the finer oversampling is used (kappa's noise at the default one
+/// Tolerances below which the finer oversampling is used (defect's noise at the default one
 /// is 1e-12 .. 1e-13 in c at orders 10-26).
 const FINE_BELOW: f64 = 1e-11;
 
-/// Accuracy in t of the first root at the scan order (a start for the higher orders).
+/// Accuracy in lc of the first root at the scan order (a start for the higher orders).
 const SCAN_XTOL: f64 = 1e-4;
 
 /// Polynomial orders tried in turn (per panel) after the scan order: steps of 2 or 3, so
@@ -140,40 +140,40 @@ impl Profile for CoupledSolution {
     }
 }
 
-/// c and 1 - c from t = ln(c / (1 - c)), both to full relative accuracy.
-fn edge_of(t: f64) -> (f64, f64) {
-    (1.0 / (1.0 + (-t).exp()), 1.0 / (1.0 + t.exp()))
+/// c and 1 - c from lc = ln(c / (1 - c)), both to full relative accuracy.
+fn edge_of(lc: f64) -> (f64, f64) {
+    (1.0 / (1.0 + (-lc).exp()), 1.0 / (1.0 + lc.exp()))
 }
 
 /// Goodman's stick edge (the closed form of [`crate::goodman::stick_edge`]) as a starting
-/// t = ln(c / (1 - c)), clamped to the range the scan works in.
+/// lc = ln(c / (1 - c)), clamped to the range the scan works in.
 fn goodman_guess(bq: f64, mu: f64) -> f64 {
     let e = crate::goodman::stick_edge(bq / mu);
     (e.c.ln() - e.one_minus_c.ln()).clamp(GUESS_RANGE.0, GUESS_RANGE.1)
 }
 
-/// Root finder state for one order n.
+/// Root finder state for one polynomial order per panel.
 struct Level<'a> {
     k: Constants,
-    n: usize,
+    order: usize,
     fams: &'a Families,
     /// Fixed panel layout while refining a bracket (None: each c its own layout).
     layout: Option<Layout>,
-    /// The evaluations (t, kappa), for the slope at the root.
+    /// The evaluations (lc, defect), for the slope at the root.
     evals: Vec<(f64, f64)>,
-    /// Accuracy wanted in t (a small fraction of the order's own error in c).
+    /// Accuracy wanted in lc (a small fraction of the order's own error in c).
     xtol: f64,
-    /// The discretisations of the last two evaluations (t, solution), newest last.
+    /// The discretisations of the last two evaluations (lc, solution), newest last.
     solved: [Option<(f64, Discrete)>; 2],
     /// Collocation points per unknown.
     oversample: f64,
 }
 
 impl<'a> Level<'a> {
-    fn new(k: Constants, n: usize, fams: &'a Families, xtol: f64, oversample: f64) -> Self {
+    fn new(k: Constants, order: usize, fams: &'a Families, xtol: f64, oversample: f64) -> Self {
         Level {
             k,
-            n,
+            order,
             fams,
             layout: None,
             evals: Vec::new(),
@@ -183,8 +183,14 @@ impl<'a> Level<'a> {
         }
     }
 
-    fn kappa(&mut self, t: f64) -> Result<f64> {
-        let (c, w) = edge_of(t);
+    /// The defect at lc, at this level's order.
+    fn defect(&mut self, lc: f64) -> Result<f64> {
+        self.defect_at_order(lc, self.order)
+    }
+
+    /// The defect at lc, at `order` (at most this level's: the families are built up to it).
+    fn defect_at_order(&mut self, lc: f64, order: usize) -> Result<f64> {
+        let (c, w) = edge_of(lc);
         let own;
         let layout = match &self.layout {
             Some(l) => l,
@@ -193,128 +199,143 @@ impl<'a> Level<'a> {
                 &own
             }
         };
-        let d = solve_fixed(self.k, c, w, self.n, self.fams, layout, self.oversample)?;
-        let kappa = d.kappa;
-        self.evals.push((t, kappa));
-        self.solved = [self.solved[1].take(), Some((t, d))];
-        if kappa.is_finite() {
-            Ok(kappa)
+        let d = solve_fixed(self.k, c, w, order, self.fams, layout, self.oversample)?;
+        let defect = d.defect;
+        self.evals.push((lc, defect));
+        self.solved = [self.solved[1].take(), Some((lc, d))];
+        if defect.is_finite() {
+            Ok(defect)
         } else {
-            Err(Error::NoConvergence(format!("kappa not finite at c = {c}")))
+            Err(Error::NoConvergence(format!(
+                "defect not finite at c = {c}"
+            )))
         }
     }
 
-    /// The discretisation at t: one of the last two evaluations if it was made there,
+    /// The discretisation at lc: one of the last two evaluations if it was made there,
     /// else a new solve.
-    fn discrete_at(&mut self, t: f64) -> Result<Discrete> {
+    fn discrete_at(&mut self, lc: f64) -> Result<Discrete> {
         let i = self
             .solved
             .iter()
-            .position(|s| s.as_ref().is_some_and(|(ts, _)| *ts == t));
+            .position(|s| s.as_ref().is_some_and(|(lc_s, _)| *lc_s == lc));
         match i.and_then(|i| self.solved[i].take()) {
             Some((_, d)) => Ok(d),
             None => {
-                self.kappa(t)?;
-                self.discrete_at(t)
+                self.defect(lc)?;
+                self.discrete_at(lc)
             }
         }
     }
 
-    /// Fixes the layout to the one of t. The evaluations so far (other layouts, or the scan
+    /// Fixes the layout to the one of lc. The evaluations so far (other layouts, or the scan
     /// order) no longer count for the slope.
-    fn fix_layout(&mut self, t: f64) {
-        let (c, w) = edge_of(t);
+    fn fix_layout(&mut self, lc: f64) {
+        let (c, w) = edge_of(lc);
         self.layout = Some(Layout::for_edge(c, w));
         self.evals.clear();
     }
-    /// Brent's method on kappa(t) in [a, b] with kappa(a) < 0 < kappa(b), to this level's
-    /// xtol in t.
+    /// Brent's method on defect(lc) in [a, b] with defect(a) < 0 < defect(b), to this level's
+    /// xtol in lc.
     fn brent(&mut self, a: f64, b: f64, fa: f64, fb: f64) -> Result<f64> {
         let xtol = self.xtol;
-        brent(|t| self.kappa(t), (a, fa), (b, fb), xtol, 100)
+        brent(|lc| self.defect(lc), (a, fa), (b, fb), xtol, 100)
     }
 
-    /// First sign change of kappa met increasing c from 0 (scanned at order SCAN_ORDER),
+    /// First sign change of defect met increasing c from 0 (scanned at order SCAN_ORDER),
     /// then refined at this level's order.
-    fn first_root(&mut self, t0: f64) -> Result<f64> {
-        let order = self.n;
-        self.n = SCAN_ORDER.min(order);
-        // never start above c = 1/2: for large friction Goodman's c is far too close to 1,
-        // beyond further roots of the oscillatory near-full-stick regime
-        let mut lo = (t0 - 1.0).min(0.0);
-        let mut steps = 0;
-        while self.kappa(lo)?.partial_cmp(&0.0) != Some(std::cmp::Ordering::Less) {
-            lo -= 2.0;
-            steps += 1;
-            if steps > MAX_STEPS_DOWN || lo < T_MIN {
-                return Err(Error::NoConvergence(format!(
-                    "kappa >= 0 down to c = {:.0e}: the stick zone is below the solver's range",
-                    edge_of(T_MIN).0
-                )));
-            }
-        }
-        let mut f_lo = self.evals[self.evals.len() - 1].1;
+    fn first_root(&mut self, lc0: f64) -> Result<f64> {
+        let scan = SCAN_ORDER.min(self.order);
+        let (mut lo, mut f_lo) = self.scan_start(lc0, scan)?;
         let mut step = SCAN_STEP;
         loop {
             let hi = lo + step;
-            let f_hi = self.kappa(hi)?;
+            let f_hi = self.defect_at_order(hi, scan)?;
             if f_hi >= 0.0 {
-                // a bracket wider than 1: bisect it (each point its own layout) first
-                let (mut lo, mut hi, mut f_lo, mut f_hi) = (lo, hi, f_lo, f_hi);
-                while hi - lo > SCAN_STEP {
-                    let mid = 0.5 * (lo + hi);
-                    let f_mid = self.kappa(mid)?;
-                    if f_mid >= 0.0 {
-                        (hi, f_hi) = (mid, f_mid);
-                    } else {
-                        (lo, f_lo) = (mid, f_mid);
-                    }
-                }
-                // refine around the interpolated zero with its layout fixed: first a narrow
-                // bracket, then (the scan order's sign may be off within its error of the
-                // root, or kappa far from linear) the scan's bracket widened
-                self.n = order;
-                let t_s = lo + (hi - lo) * f_lo / (f_lo - f_hi);
-                for (a, b) in [(t_s - 0.25, t_s + 0.25), (lo - 0.5, hi + 0.5)] {
-                    self.fix_layout(0.5 * (a + b));
-                    // a bracket the layout does not fit is skipped
-                    if let (Ok(f_a), Ok(f_b)) = (self.kappa(a), self.kappa(b))
-                        && f_a < 0.0
-                        && f_b >= 0.0
-                    {
-                        return self.brent(a, b, f_a, f_b);
-                    }
-                }
-                return Err(Error::NoConvergence(format!(
-                    "kappa changes sign with the panel layout or order near t = {lo}"
-                )));
+                return self.refine_bracket((lo, f_lo), (hi, f_hi), scan);
             }
             // next step: a little beyond the linearly predicted zero, within the bounds
             step = (1.2 * f_hi * step / (f_lo - f_hi)).clamp(SCAN_STEP, SCAN_MAX_STEP);
             if !step.is_finite() {
                 step = SCAN_STEP;
             }
-            f_lo = f_hi;
-            lo = hi;
+            (lo, f_lo) = (hi, f_hi);
             if lo > T_MAX {
                 return Err(Error::NoConvergence(format!(
-                    "no sign change of kappa for 1 - c >= {:.0e}: the slip zones are below the \
-                     solver's range",
+                    "no sign change of the defect for 1 - c >= {:.0e}: the slip zones are below \
+                     the solver's range",
                     edge_of(T_MAX).1
                 )));
             }
         }
     }
 
-    /// d kappa / dt at the root t: the secant of the two evaluations (on this level's fixed
-    /// layout) within 0.1 of t whose kappa differ most, if that difference stands out of
-    /// kappa's rounding noise (10 times the smallest |kappa| seen) and the secant rises (kappa
+    /// The scan's start at or below lc0 (never above c = 1/2: for large friction Goodman's c
+    /// is far too close to 1, beyond further roots of the oscillatory near-full-stick regime),
+    /// walking down until the defect at the scan order is negative: (lc, defect).
+    fn scan_start(&mut self, lc0: f64, scan: usize) -> Result<(f64, f64)> {
+        let mut lo = (lc0 - 1.0).min(0.0);
+        for _ in 0..=MAX_STEPS_DOWN {
+            if lo < T_MIN {
+                break;
+            }
+            let f = self.defect_at_order(lo, scan)?;
+            if f < 0.0 {
+                return Ok((lo, f));
+            }
+            lo -= 2.0;
+        }
+        Err(Error::NoConvergence(format!(
+            "defect >= 0 down to c = {:.0e}: the stick zone is below the solver's range",
+            edge_of(T_MIN).0
+        )))
+    }
+
+    /// The root in a scan bracket (defect(lo) < 0 <= defect(hi) at the scan order): a bracket
+    /// wider than SCAN_STEP is bisected (each point its own layout) first; then Brent at this
+    /// level's order with the layout fixed, around the interpolated zero: first a narrow
+    /// bracket, then (the scan order's sign may be off within its error of the root, or the
+    /// defect far from linear) the scan's bracket widened.
+    fn refine_bracket(
+        &mut self,
+        (mut lo, mut f_lo): (f64, f64),
+        (mut hi, mut f_hi): (f64, f64),
+        scan: usize,
+    ) -> Result<f64> {
+        while hi - lo > SCAN_STEP {
+            let mid = 0.5 * (lo + hi);
+            let f_mid = self.defect_at_order(mid, scan)?;
+            if f_mid >= 0.0 {
+                (hi, f_hi) = (mid, f_mid);
+            } else {
+                (lo, f_lo) = (mid, f_mid);
+            }
+        }
+        let lc_s = lo + (hi - lo) * f_lo / (f_lo - f_hi);
+        for (a, b) in [(lc_s - 0.25, lc_s + 0.25), (lo - 0.5, hi + 0.5)] {
+            self.fix_layout(0.5 * (a + b));
+            // a bracket the layout does not fit is skipped
+            if let (Ok(f_a), Ok(f_b)) = (self.defect(a), self.defect(b))
+                && f_a < 0.0
+                && f_b >= 0.0
+            {
+                return self.brent(a, b, f_a, f_b);
+            }
+        }
+        Err(Error::NoConvergence(format!(
+            "the defect changes sign with the panel layout or order near lc = {lo}"
+        )))
+    }
+
+    /// d defect / d lc at the root lc: the secant of the two evaluations (on this level's fixed
+    /// layout) within 0.1 of lc whose defect differ most, if that difference stands out of
+    /// defect's rounding noise (10 times the smallest |defect| seen) and the secant rises (defect
     /// crosses zero upwards at the physical root); NaN otherwise.
-    fn slope(&self, t: f64) -> f64 {
+    fn slope(&self, lc: f64) -> f64 {
         let near: Vec<&(f64, f64)> = self
             .evals
             .iter()
-            .filter(|e| (e.0 - t).abs() <= 0.1)
+            .filter(|e| (e.0 - lc).abs() <= 0.1)
             .collect();
         let noise = near.iter().map(|e| e.1.abs()).fold(f64::INFINITY, f64::min);
         let mut best = (10.0 * noise, f64::NAN);
@@ -330,27 +351,27 @@ impl<'a> Level<'a> {
         best.1
     }
 
-    /// The root near t_prev (from a lower order) by the secant method started with the
+    /// The root near lc_prev (from a lower order) by the secant method started with the
     /// lower order's slope; if that fails, by bracketing and Brent. Returns an evaluated
-    /// point t and its distance from this order's root, |kappa(t)| / |slope| (which also
-    /// measures the rounding noise of kappa), once that is below xtol: usually two solves.
-    fn root_near(&mut self, t_prev: f64, slope: f64, first: f64) -> Result<(f64, f64)> {
-        self.fix_layout(t_prev);
-        let f = self.kappa(t_prev)?;
+    /// point lc and its distance from this order's root, |defect(lc)| / |slope| (which also
+    /// measures the rounding noise of defect), once that is below xtol: usually two solves.
+    fn root_near(&mut self, lc_prev: f64, slope: f64, first: f64) -> Result<(f64, f64)> {
+        self.fix_layout(lc_prev);
+        let f = self.defect(lc_prev)?;
         if slope.is_finite() && slope != 0.0 {
-            let (mut t0, mut f0) = (t_prev, f);
+            let (mut lc0, mut f0) = (lc_prev, f);
             let mut step = -f0 / slope;
             if step.abs() <= self.xtol || f0 == 0.0 {
-                return Ok((t0, step.abs()));
+                return Ok((lc0, step.abs()));
             }
-            let mut t1 = t0 + step;
+            let mut lc1 = lc0 + step;
             for _ in 0..6 {
                 if step.abs() > 1.0 {
                     break;
                 }
-                let f1 = self.kappa(t1)?;
+                let f1 = self.defect(lc1)?;
                 // the secant slope, unless noise has made it useless: then the lower order's
-                let s = (f1 - f0) / (t1 - t0);
+                let s = (f1 - f0) / (lc1 - lc0);
                 let s = if s.is_finite() && s * slope > 0.0 {
                     s
                 } else {
@@ -358,34 +379,38 @@ impl<'a> Level<'a> {
                 };
                 step = -f1 / s;
                 if step.abs() <= self.xtol || f1 == 0.0 {
-                    return Ok((t1, step.abs()));
+                    return Ok((lc1, step.abs()));
                 }
                 if f1.abs() >= f0.abs() {
-                    // no progress: kappa's rounding noise reached. The root lies between t0
-                    // and t1 if kappa changes sign there, else within the noise's size
+                    // no progress: defect's rounding noise reached. The root lies between lc0
+                    // and lc1 if defect changes sign there, else within the noise's size
                     // over the slope
-                    let best = if f1.abs() < f0.abs() { t1 } else { t0 };
+                    let best = if f1.abs() < f0.abs() { lc1 } else { lc0 };
                     let unc = if f0 * f1 < 0.0 {
-                        (t1 - t0).abs()
+                        (lc1 - lc0).abs()
                     } else {
                         2.0 * f0.abs().max(f1.abs()) / slope.abs()
                     };
                     return Ok((best, unc));
                 }
-                (t0, f0) = (t1, f1);
-                t1 += step;
+                (lc0, f0) = (lc1, f1);
+                lc1 += step;
             }
         }
         let mut step = 1e-6f64.max(4.0 * first);
         while step < 8.0 {
-            let (lo, hi) = (t_prev - step, t_prev + step);
+            let (lo, hi) = (lc_prev - step, lc_prev + step);
             let (f_lo, f_hi) = if f < 0.0 {
-                (f, self.kappa(hi)?)
+                (f, self.defect(hi)?)
             } else {
-                (self.kappa(lo)?, f)
+                (self.defect(lo)?, f)
             };
             if f_lo < 0.0 && f_hi >= 0.0 {
-                let (a, b) = if f < 0.0 { (t_prev, hi) } else { (lo, t_prev) };
+                let (a, b) = if f < 0.0 {
+                    (lc_prev, hi)
+                } else {
+                    (lo, lc_prev)
+                };
                 return Ok((self.brent(a, b, f_lo, f_hi)?, self.xtol));
             }
             step *= 4.0;
@@ -424,11 +449,11 @@ fn traction_gap(d: &Discrete, other: &Discrete) -> f64 {
 fn admissible(d: &Discrete, mu: f64) -> bool {
     let nodes = gauss_legendre_nodes(7);
     d.mesh.panels.iter().filter(|p| p.stick).all(|panel| {
-        nodes.iter().all(|&t| {
+        nodes.iter().all(|&node| {
             let x = if panel.central {
-                panel.h * (0.5 * (1.0 + t)).sqrt()
+                panel.h * (0.5 * (1.0 + node)).sqrt()
             } else {
-                Pt::local(panel.m, panel.h, t).x
+                Pt::local(panel.m, panel.h, node).x
             };
             let (p, q) = d.eval(Pt { x, u: 1.0 - x });
             q.abs() <= mu * p * (1.0 + 1e-6) + 1e-12
@@ -443,10 +468,7 @@ pub fn solve(k: &Coupling, tol: f64) -> Result<CoupledSolution> {
     if k.mu == 0.0 {
         return Ok(CoupledSolution {
             coupling: *k,
-            edge: StickEdge {
-                c: 0.0,
-                one_minus_c: 1.0,
-            },
+            edge: StickEdge::from_c(0.0),
             error: 0.0,
             delta: 1.0,
             discrete: None,
@@ -460,52 +482,30 @@ pub fn solve(k: &Coupling, tol: f64) -> Result<CoupledSolution> {
         mu: r.mu,
         g: r.edge_exponent(),
     };
-    // the first root at the scan order (cheap), its slope, then the orders in turn
-    let fams = Families::new(consts.g, SCAN_ORDER);
-    // tolerances near kappa's rounding noise take the finer (costlier) oversampling
+    // tolerances near the defect's rounding noise take the finer (costlier) oversampling
     let oversample = if tol < FINE_BELOW {
         system::OVERSAMPLE_FINE
     } else {
         system::OVERSAMPLE
     };
+    // the first root at the scan order (cheap), its slope, then the orders in turn
+    let fams = Families::new(consts.g, SCAN_ORDER);
     let mut level = Level::new(consts, SCAN_ORDER, &fams, SCAN_XTOL, oversample);
-    let mut t = level.first_root(goodman_guess(r.bq, r.mu))?;
-    let (mut unc, mut slope) = (level.xtol, level.slope(t));
-    let mut prev = level.discrete_at(t)?;
-    let mut last_diff = 1.0;
+    let lc = level.first_root(goodman_guess(r.bq, r.mu))?;
+    let mut root = Root {
+        lc,
+        unc: level.xtol,
+        slope: level.slope(lc),
+        step: 1.0,
+        discrete: level.discrete_at(lc)?,
+    };
     for &n in &ORDERS {
-        // each order locates its root to 5% of the tolerance in c (dc = c (1 - c) dt)
-        let (c_prev, w_prev) = edge_of(t);
-        let xtol = (0.05 * tol / (c_prev * w_prev)).clamp(1e-13, 1e-3);
-        let fams = Families::new(consts.g, n);
-        let mut level = Level::new(consts, n, &fams, xtol, oversample);
-        let (t_n, unc_n) = match level.root_near(t, slope, last_diff) {
-            Ok(r) => r,
-            Err(_) => {
-                // a step left the layout's range or the root moved away: the first-root
-                // search again (scan from below at the scan order, Brent at this order)
-                level = Level::new(consts, n, &fams, xtol, oversample);
-                (level.first_root(t)?, xtol)
-            }
-        };
-        let (c, w) = edge_of(t_n);
-        let d = level.discrete_at(t_n)?;
-        // The difference between the orders' roots: |c - c_prev| from whichever of c, 1 - c
-        // is small, or, if the previous order's point was already within xtol of this
-        // order's root, the step to it (dc = c (1 - c) dt). Twice that (orders 2-3 apart, the
-        // error does not always fall far below the lower order's), plus the distances of
-        // both evaluated points from their order's root.
-        let (dc, own) = if t_n == t {
-            (c * w * unc_n, c * w * unc_n)
-        } else if c < 0.5 {
-            ((c - c_prev).abs(), c * w * unc_n)
-        } else {
-            ((w - w_prev).abs(), c * w * unc_n)
-        };
-        let diff = ORDER_SAFETY * dc + own + c * w * unc;
-        let gap = traction_gap(&d, &prev);
+        let next = root_at_order(consts, n, &root, tol, oversample)?;
+        let (c, w) = edge_of(next.lc);
+        let diff = order_difference(&root, &next);
+        let gap = traction_gap(&next.discrete, &root.discrete);
         if diff <= tol && gap <= (TRACTION_RATIO * tol).max(TRACTION_FLOOR) {
-            if !admissible(&d, consts.mu) {
+            if !admissible(&next.discrete, consts.mu) {
                 return Err(Error::NoConvergence(format!(
                     "root c = {c} violates |q| <= mu p on the stick zone"
                 )));
@@ -520,7 +520,7 @@ pub fn solve(k: &Coupling, tol: f64) -> Result<CoupledSolution> {
                 edge,
                 error: diff,
                 delta,
-                discrete: Some(d),
+                discrete: Some(next.discrete),
                 order: n,
             });
         }
@@ -533,12 +533,73 @@ pub fn solve(k: &Coupling, tol: f64) -> Result<CoupledSolution> {
                 ),
             });
         }
-        last_diff = (t_n - t).abs();
-        // the slope of this order if it made two evaluations near its root
-        slope = Some(level.slope(t_n))
-            .filter(|s| s.is_finite())
-            .unwrap_or(slope);
-        (t, unc, prev) = (t_n, unc_n, d);
+        root = next;
     }
     Err(Error::Internal("coupled: order loop fell through".into()))
+}
+
+/// One order's root: lc = ln(c / (1 - c)), its distance from the order's exact root (unc),
+/// the slope of the defect there, the step from the previous order's root and the
+/// discretisation at lc.
+struct Root {
+    lc: f64,
+    unc: f64,
+    slope: f64,
+    step: f64,
+    discrete: Discrete,
+}
+
+/// The root at order n, started from the previous order's root and slope; if that fails
+/// (a step left the layout's range or the root moved away), the first-root search again
+/// (scan from below at the scan order, Brent at this order). Each order locates its root to
+/// 5% of the tolerance in c (dc = c (1 - c) d lc).
+fn root_at_order(
+    consts: Constants,
+    n: usize,
+    prev: &Root,
+    tol: f64,
+    oversample: f64,
+) -> Result<Root> {
+    let (c_prev, w_prev) = edge_of(prev.lc);
+    let xtol = (0.05 * tol / (c_prev * w_prev)).clamp(1e-13, 1e-3);
+    let fams = Families::new(consts.g, n);
+    let mut level = Level::new(consts, n, &fams, xtol, oversample);
+    let (lc, unc) = match level.root_near(prev.lc, prev.slope, prev.step) {
+        Ok(r) => r,
+        Err(_) => {
+            level = Level::new(consts, n, &fams, xtol, oversample);
+            (level.first_root(prev.lc)?, xtol)
+        }
+    };
+    let discrete = level.discrete_at(lc)?;
+    // the slope of this order if it made two evaluations near its root
+    let slope = Some(level.slope(lc))
+        .filter(|s| s.is_finite())
+        .unwrap_or(prev.slope);
+    Ok(Root {
+        lc,
+        unc,
+        slope,
+        step: (lc - prev.lc).abs(),
+        discrete,
+    })
+}
+
+/// The error estimate of `next`'s c from two successive orders: |c - c_prev| from whichever
+/// of c, 1 - c is small, or, if the previous order's point was already within xtol of this
+/// order's root, the step to it (dc = c (1 - c) d lc). ORDER_SAFETY times that (orders 2-3
+/// apart, the error does not always fall far below the lower order's), plus the distances
+/// of both evaluated points from their order's root.
+fn order_difference(prev: &Root, next: &Root) -> f64 {
+    let (c_prev, w_prev) = edge_of(prev.lc);
+    let (c, w) = edge_of(next.lc);
+    let own = c * w * next.unc;
+    let dc = if next.lc == prev.lc {
+        own
+    } else if c < 0.5 {
+        (c - c_prev).abs()
+    } else {
+        (w - w_prev).abs()
+    };
+    ORDER_SAFETY * dc + own + c * w * prev.unc
 }

@@ -2,7 +2,7 @@
 //! H[q] = -bq p on 0 < x < c, (E3) q = mu p on c < x < 1 built into the basis, (E4)
 //! int p = 1, with p even and q odd (so H over (-1, 1) is the panel integral at x plus or
 //! minus the mirrored one at -x). Unknowns: the coefficients of the panel bases of
-//! [`super::mesh`], including the two wrong-c modes (|x| - c)^(g-1) whose coefficient kappa
+//! [`super::mesh`], including the two wrong-c modes (|x| - c)^(g-1) whose coefficient defect
 //! vanishes exactly at the physical c (the compatibility condition, THEORY.md section 5).
 //!
 //! Each panel gets OVERSAMPLE times as many collocation points (Gauss-Legendre points of the
@@ -22,7 +22,7 @@ use std::f64::consts::PI;
 /// panels at c from amplifying rounding errors (square collocation loses 3-4 digits in c).
 pub(crate) const OVERSAMPLE: f64 = 2.0;
 
-/// Oversampling for tolerances at kappa's rounding noise: 3 points per unknown lower that
+/// Oversampling for tolerances at defect's rounding noise: 3 points per unknown lower that
 /// noise 10-50 times at orders >= 8 (measured), for 1.6 times the least-squares work.
 pub(crate) const OVERSAMPLE_FINE: f64 = 3.0;
 
@@ -86,7 +86,7 @@ pub(crate) struct Discrete {
     /// Coefficients of all panel bases.
     pub(crate) coef: Vec<f64>,
     /// Physical coefficient of q's (c - x)^(g - 1) mode: zero at the physical c.
-    pub(crate) kappa: f64,
+    pub(crate) defect: f64,
     /// The constants.
     pub(crate) k: Constants,
 }
@@ -142,32 +142,51 @@ fn rows(mesh: &Mesh, oversample: f64) -> Vec<Row> {
     rows
 }
 
-/// Adds the Hilbert-transform contributions of `blocks` on panel `q` at target x to
-/// `row[offset..]`: scale * (C(y) + sign * C(y')) / pi, y' the mirrored target.
+/// Parity in x of a density on the whole punch: p (and q on the slip zones, as mu p sgn x
+/// with a sign the rows carry) is even, q on the stick zone is odd.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Parity {
+    Even,
+    Odd,
+}
+
+impl Parity {
+    /// The sign of the mirrored panel's contribution: the transform over x < 0 of an even
+    /// density is minus that over x > 0 at the mirrored target, of an odd one plus.
+    fn mirror_sign(self) -> f64 {
+        match self {
+            Parity::Even => -1.0,
+            Parity::Odd => 1.0,
+        }
+    }
+}
+
+/// Adds the Hilbert-transform contributions of `blocks` on panel `src` (and its mirror
+/// image) at target x to `row[offset..]`: scale * (C(y) + s C(y')) / pi, y' the mirrored
+/// target and s the parity's mirror sign.
 #[allow(clippy::too_many_arguments)]
 fn add_hilbert(
     fams: &Families,
-    q: &Panel,
+    src: &Panel,
     blocks: &[Block],
     offset: usize,
     x: Pt,
-    sign: f64,
+    parity: Parity,
     scale: f64,
     buf: &mut [f64],
     buf2: &mut [f64],
     row: &mut [f64],
 ) {
     let mut col = offset;
-    if q.central {
-        // [-l, l] in Y = 2 x^2/l^2 - 1: p = f(Y) gives x (l^2/2)^(-1/2) C[(1+Y)^(-1/2) f],
-        // q = x f(Y) gives (l^2/2)^(1/2) C[(1+Y)^(1/2) f] (`sign` < 0: p, > 0: q)
-        let r = x.x / q.h;
+    if src.central {
+        // [-l, l] in Y = 2 x^2/l^2 - 1: an even f(Y) gives x (l^2/2)^(-1/2) C[(1+Y)^(-1/2) f],
+        // an odd x f(Y) gives (l^2/2)^(1/2) C[(1+Y)^(1/2) f]
+        let r = x.x / src.h;
         let yy = 2.0 * r * r - 1.0;
-        let half = q.h * std::f64::consts::FRAC_1_SQRT_2;
-        let (fam, factor) = if sign < 0.0 {
-            (fams.get(Basis::CentralP), x.x / half)
-        } else {
-            (fams.get(Basis::CentralQ), half)
+        let half = src.h * std::f64::consts::FRAC_1_SQRT_2;
+        let (fam, factor) = match parity {
+            Parity::Even => (fams.get(Basis::CentralP), x.x / half),
+            Parity::Odd => (fams.get(Basis::CentralQ), half),
         };
         for b in blocks {
             fam.cauchy(yy, &mut buf[..b.count]);
@@ -178,10 +197,11 @@ fn add_hilbert(
         }
         return;
     }
-    let y = x.minus(q.m) / q.h;
-    let ym = -(x.x + q.m.x) / q.h;
+    let y = x.minus(src.m) / src.h;
+    let ym = -(x.x + src.m.x) / src.h;
     for b in blocks {
         let fam = fams.get(b.basis);
+        let sign = parity.mirror_sign();
         fam.cauchy_pair(y, ym, sign, &mut buf[..b.count], &mut buf2[..b.count]);
         for u in &buf[..b.count] {
             row[col] += scale * u / PI;
@@ -224,20 +244,19 @@ pub(crate) fn solve_fixed(
     for (i, row) in rows.iter().enumerate() {
         r.fill(0.0);
         let own = &mesh.panels[row.panel];
-        for q in &mesh.panels {
-            if !row.e2 {
-                add_hilbert(
-                    fams, q, &q.p, q.p_offset, row.x, -1.0, 1.0, &mut buf, &mut buf2, &mut r,
-                );
-            } else if q.stick {
-                add_hilbert(
-                    fams, q, &q.q, q.q_offset, row.x, 1.0, 1.0, &mut buf, &mut buf2, &mut r,
-                );
+        for src in &mesh.panels {
+            // (E1) rows: H[p]; (E2) rows: H[q], q odd on the stick zone and mu p sgn x (p's
+            // coefficients, odd) on the slip zones
+            let (blocks, offset, parity, scale) = if !row.e2 {
+                (&src.p, src.p_offset, Parity::Even, 1.0)
+            } else if src.stick {
+                (&src.q, src.q_offset, Parity::Odd, 1.0)
             } else {
-                add_hilbert(
-                    fams, q, &q.p, q.p_offset, row.x, 1.0, k.mu, &mut buf, &mut buf2, &mut r,
-                );
-            }
+                (&src.p, src.p_offset, Parity::Odd, k.mu)
+            };
+            add_hilbert(
+                fams, src, blocks, offset, row.x, parity, scale, &mut buf, &mut buf2, &mut r,
+            );
         }
         // local terms: (E1) - bp q(x), (E2) + bq p(x)
         let (blocks, mut col, scale) = if row.e2 {
@@ -298,11 +317,11 @@ pub(crate) fn solve_fixed(
         )));
     }
     let cs = &mesh.panels[mesh.c_stick];
-    let kappa = coef[cs.q_offset + 2 * n] * cs.h.powf(1.0 - k.g);
+    let defect = coef[cs.q_offset + 2 * n] * cs.h.powf(1.0 - k.g);
     Ok(Discrete {
         mesh,
         coef,
-        kappa,
+        defect,
         k,
     })
 }

@@ -296,7 +296,7 @@ fn c_at_order(k: Constants, n: usize) -> f64 {
     discrete_at_order(k, n).mesh.c
 }
 
-/// The discretisation at the root of kappa at a fixed order n.
+/// The discretisation at the root of defect at a fixed order n.
 fn discrete_at_order(k: Constants, n: usize) -> Discrete {
     let fams = Families::new(k.g, n);
     let mut level = Level::new(k, n, &fams, 0.0, system::OVERSAMPLE);

@@ -1,0 +1,31 @@
+#!/usr/bin/env python3
+"""The default scene through the Python package: a carbon/epoxy ply (plane stress) under a
+rigid flat punch with mu = 0.3. Prints what c_examples/default_scene.c prints, in the same
+format: the constants, c, 1 - c, the method used, its error estimate and p, q at 21 points.
+
+Run it after ``pip install ./python``; a failure raises orthoslip.OrthoslipError.
+"""
+import numpy as np
+
+import orthoslip
+
+e11, e22, g12, nu12, mu = 181e9, 10.3e9, 7.17e9, 0.28, 0.3
+print(f"orthoslip {orthoslip.__version__} (Python)")
+print(f"ply: E11 = {e11:g} Pa, E22 = {e22:g} Pa, G12 = {g12:g} Pa, nu12 = {nu12:g}, "
+      f"plane stress; mu = {mu:g}")
+ply = orthoslip.Material.plane_stress(e11, e22, g12, nu12)
+print("effective: E = {:.17g}, nu = {:.17g}, delta = {:.17g}, kappa = {:.17g}"
+      .format(*ply.constants))
+print("green: A = {:.17g}, B = {:.17g}, C = {:.17g}".format(*ply.green))
+
+solution = orthoslip.Contact(ply, mu, method="auto").solve()
+print(f"c = {solution.c:.17g}")
+print(f"1 - c = {solution.slip_width:.17g}")
+print(f"method = {solution.method.name}")
+print(f"error estimate = {solution.error_estimate:.3e}")
+
+x = 0.99 * np.arange(-10, 11) / 10
+p, q = solution.tractions(x)
+print(f"{'x':>10} {'p':>24} {'q':>24}")
+for row in zip(x, p, q):
+    print("{:10.4f} {:24.17g} {:24.17g}".format(*row))
