@@ -35,9 +35,7 @@ static double flamant_eval(double t, void *params)
 {
     const flamant_integrand *in = (const flamant_integrand *)params;
     double p, q, r, y = in->depth, d, v;
-    /* QAWS samples the ends, where only the weighted product is finite */
-    if (in->edge < 0 && t + 1.0 < HILBERT_EDGE_OFFSET) t = -1.0 + HILBERT_EDGE_OFFSET;
-    if (in->edge > 0 && 1.0 - t < HILBERT_EDGE_OFFSET) t = 1.0 - HILBERT_EDGE_OFFSET;
+    t = edge_point(in->edge, t);
     in->field->eval(in->field->ctx, t, &p, &q);
     r = in->x - t;
     d = (r * r + y * y) * (r * r + y * y);
@@ -46,32 +44,15 @@ static double flamant_eval(double t, void *params)
     case 1: v = -(p * y * y * y + q * r * y * y); break;
     default: v = p * r * y * y + q * r * r * y; break;
     }
-    v *= 2.0 / (TEST_PI * d);
-    if (in->edge < 0) v *= pow(t + 1.0, in->field->g);
-    if (in->edge > 0) v *= pow(1.0 - t, in->field->g);
-    return v;
+    return v * 2.0 / (TEST_PI * d) * edge_factor(in->edge, in->field->g, t);
 }
 
 static double flamant_piece(hilbert_quad *h, flamant_integrand *in, double a, double b)
 {
     gsl_function fn;
-    double result = 0.0, abserr = 0.0;
-    int status;
     fn.function = flamant_eval;
     fn.params = in;
-    if (in->edge != 0) {
-        double alpha = in->edge < 0 ? -in->field->g : 0.0;
-        double beta = in->edge > 0 ? -in->field->g : 0.0;
-        gsl_integration_qaws_table *table = gsl_integration_qaws_table_alloc(alpha, beta, 0, 0);
-        status = gsl_integration_qaws(&fn, a, b, table, HILBERT_EPSABS, HILBERT_EPSREL,
-                                      HILBERT_LIMIT, h->work, &result, &abserr);
-        gsl_integration_qaws_table_free(table);
-    } else {
-        status = gsl_integration_qag(&fn, a, b, HILBERT_EPSABS, HILBERT_EPSREL, HILBERT_LIMIT,
-                                     GSL_INTEG_GAUSS21, h->work, &result, &abserr);
-    }
-    hilbert_account(h, status, abserr);
-    return result;
+    return quad_piece(h, &fn, in->edge, in->field->g, a, b);
 }
 
 static int compare_doubles(const void *a, const void *b)
@@ -146,10 +127,7 @@ int main(void)
                error, which the field leaves out: solve tightly enough for them to vanish */
             CHECK_OK(orthoslip_contact_set_tolerance(contact, 1e-12));
             CHECK_OK(orthoslip_contact_solve(contact, &s));
-            f.eval = solution_tractions_at;
-            f.ctx = s;
-            CHECK_OK(orthoslip_solution_stick_half_width(s, &f.c));
-            f.g = methods[j] == ORTHOSLIP_METHOD_GOODMAN ? 0.5 : 0.5 - atan(bp * mu) / TEST_PI;
+            f = solution_field(s, methods[j], bp, mu);
             CHECK_OK(orthoslip_solution_tractions(s, &x0, 1, &p0, &q0));
             {
                 const double c = f.c;

@@ -73,10 +73,7 @@ int main(void)
             double from = 0.0, integral = 0.0, stick[2], zero[2];
             CHECK_OK(orthoslip_contact_set_tolerance(contact, 1e-10));
             CHECK_OK(orthoslip_contact_solve(contact, &s));
-            f.eval = solution_tractions_at;
-            f.ctx = s;
-            CHECK_OK(orthoslip_solution_stick_half_width(s, &f.c));
-            f.g = methods[j] == ORTHOSLIP_METHOD_GOODMAN ? 0.5 : 0.5 - atan(bp * mu) / TEST_PI;
+            f = solution_field(s, methods[j], bp, mu);
             stick[0] = 0.5 * f.c;
             stick[1] = -0.99 * f.c;
             CHECK_OK(orthoslip_solution_slip(s, stick, 2, zero));
