@@ -88,6 +88,16 @@ int main(void) {
     for (int i = 0; i < N_POINTS; ++i) {
         printf("%10.4f %24.17g %24.17g\n", x[i], p[i], q[i]);
     }
+
+    /* what engineers compute from it: the edge singularity p ~ k (1 - |x|)^(-g), the stresses
+       half a punch width below the centre, the slip at x = 0.99 */
+    double k, g, px = 0.0, py = -0.5, sxx, syy, sxy, sx = 0.99, slip;
+    CHECK(orthoslip_solution_edge_intensity(solution, &k, &g));
+    CHECK(orthoslip_solution_stresses(solution, &px, &py, 1, &sxx, &syy, &sxy));
+    CHECK(orthoslip_solution_slip(solution, &sx, 1, &slip));
+    printf("edge intensity: k = %.17g, g = %.17g\n", k, g);
+    printf("stresses at (0, -0.5): sxx = %.17g, syy = %.17g, sxy = %.17g\n", sxx, syy, sxy);
+    printf("slip at x = 0.99: %.17g\n", slip);
     exit_code = EXIT_SUCCESS;
 
 cleanup:

@@ -49,6 +49,13 @@ int main() {
         for (int i = 0; i < n; ++i) {
             std::printf("%10.4f %24.17g %24.17g\n", x[i], t.p[i], t.q[i]);
         }
+
+        const auto edge = s.edge_intensity();
+        const auto st = s.stresses({0.0}, {-0.5});
+        std::printf("edge intensity: k = %.17g, g = %.17g\n", edge.k, edge.g);
+        std::printf("stresses at (0, -0.5): sxx = %.17g, syy = %.17g, sxy = %.17g\n", st.sxx[0],
+                    st.syy[0], st.sxy[0]);
+        std::printf("slip at x = 0.99: %.17g\n", s.slip({0.99})[0]);
     } catch (const orthoslip::error &e) {
         std::fprintf(stderr, "default_scene: %s\n", e.what());
         return 1;

@@ -13,6 +13,7 @@ program default_scene
   type(c_ptr) :: material = c_null_ptr, contact = c_null_ptr, solution = c_null_ptr
   real(c_double) :: e, nu, delta, kappa, a, b, c_green, c, one_minus_c, c_error
   real(c_double) :: x(n), p(n), q(n)
+  real(c_double) :: k, g, sxx(1), syy(1), sxy(1), slip(1)
   integer(c_int) :: used
   integer :: i
 
@@ -53,6 +54,17 @@ program default_scene
   do i = 1, n
     print '(f10.4,2es25.16e3)', x(i), p(i), q(i)
   end do
+
+  call check(orthoslip_solution_edge_intensity(solution, k, g), &
+       'orthoslip_solution_edge_intensity')
+  call check(orthoslip_solution_stresses(solution, [0.0_c_double], [-0.5_c_double], 1_c_size_t, &
+       sxx, syy, sxy), 'orthoslip_solution_stresses')
+  call check(orthoslip_solution_slip(solution, [0.99_c_double], 1_c_size_t, slip), &
+       'orthoslip_solution_slip')
+  print '(2(a,es24.16e3))', 'edge intensity: k = ', k, ', g = ', g
+  print '(3(a,es24.16e3))', 'stresses at (0, -0.5): sxx = ', sxx(1), ', syy = ', syy(1), &
+       ', sxy = ', sxy(1)
+  print '(a,es24.16e3)', 'slip at x = 0.99: ', slip(1)
 
   call orthoslip_solution_free(solution)
   call orthoslip_contact_free(contact)

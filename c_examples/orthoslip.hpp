@@ -57,6 +57,14 @@ struct green_constants {
 struct tractions {
     std::vector<double> p, q;
 };
+/// Stresses per P/a inside the solid (tension positive).
+struct stresses {
+    std::vector<double> sxx, syy, sxy;
+};
+/// The punch-edge singularity p ~ k (1 - |x|)^(-g).
+struct edge_intensity {
+    double k, g;
+};
 
 class solution {
   public:
@@ -74,6 +82,35 @@ class solution {
         tractions t{std::vector<double>(x.size()), std::vector<double>(x.size())};
         check(orthoslip_solution_tractions(h_.get(), x.data(), x.size(), t.p.data(), t.q.data()));
         return t;
+    }
+    /// Stresses at the points (x[i], y[i]), units of a, y <= 0 (the solid is y < 0).
+    orthoslip::stresses stresses(const std::vector<double> &x, const std::vector<double> &y) const {
+        if (x.size() != y.size()) {
+            throw std::invalid_argument("orthoslip::solution::stresses: x and y differ in size");
+        }
+        const auto n = x.size();
+        orthoslip::stresses st{std::vector<double>(n), std::vector<double>(n),
+                               std::vector<double>(n)};
+        if (n == 0) {
+            return st; // empty vectors may hold no pointer at all
+        }
+        check(orthoslip_solution_stresses(h_.get(), x.data(), y.data(), n, st.sxx.data(),
+                                          st.syy.data(), st.sxy.data()));
+        return st;
+    }
+    orthoslip::edge_intensity edge_intensity() const {
+        orthoslip::edge_intensity e{};
+        check(orthoslip_solution_edge_intensity(h_.get(), &e.k, &e.g));
+        return e;
+    }
+    /// Tangential surface displacement relative to the punch, per P/E, at `x`.
+    std::vector<double> slip(const std::vector<double> &x) const {
+        std::vector<double> u(x.size());
+        if (x.empty()) {
+            return u;
+        }
+        check(orthoslip_solution_slip(h_.get(), x.data(), x.size(), u.data()));
+        return u;
     }
     const orthoslip_solution *get() const noexcept { return h_.get(); }
 

@@ -31,7 +31,8 @@ module orthoslip_mod
        orthoslip_solution_free, orthoslip_solution_stick_half_width, &
        orthoslip_solution_slip_width, orthoslip_solution_tractions, orthoslip_solution_method, &
        orthoslip_solution_error_estimate, orthoslip_last_error_message, &
-       orthoslip_status_string, orthoslip_version
+       orthoslip_status_string, orthoslip_version, orthoslip_solution_stresses, &
+       orthoslip_solution_edge_intensity, orthoslip_solution_slip
   public :: last_error_message, status_name, version
 
   interface
@@ -188,6 +189,37 @@ module orthoslip_mod
     function orthoslip_version() bind(c, name="orthoslip_version") result(str)
       import :: c_ptr
       type(c_ptr) :: str
+    end function
+
+    ! Stresses per P/a at (x(i), y(i)), units of a, y <= 0 (the solid is y < 0).
+    function orthoslip_solution_stresses(s, x, y, n, sxx, syy, sxy) &
+         bind(c, name="orthoslip_solution_stresses") result(status)
+      import :: c_int, c_double, c_size_t, c_ptr
+      type(c_ptr), value :: s
+      real(c_double), intent(in) :: x(*), y(*)
+      integer(c_size_t), value :: n
+      real(c_double), intent(out) :: sxx(*), syy(*), sxy(*)
+      integer(c_int) :: status
+    end function
+
+    ! p ~ k (1 - |x|)^(-g) at the punch edges.
+    function orthoslip_solution_edge_intensity(s, k, g) &
+         bind(c, name="orthoslip_solution_edge_intensity") result(status)
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: s
+      real(c_double), intent(out) :: k, g
+      integer(c_int) :: status
+    end function
+
+    ! Tangential surface displacement relative to the punch, per P/E.
+    function orthoslip_solution_slip(s, x, n, slip) bind(c, name="orthoslip_solution_slip") &
+         result(status)
+      import :: c_int, c_double, c_size_t, c_ptr
+      type(c_ptr), value :: s
+      real(c_double), intent(in) :: x(*)
+      integer(c_size_t), value :: n
+      real(c_double), intent(out) :: slip(*)
+      integer(c_int) :: status
     end function
 
     function c_strlen(str) bind(c, name="strlen") result(n)

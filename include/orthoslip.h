@@ -399,6 +399,68 @@ orthoslip_status orthoslip_solution_method(const orthoslip_solution *s, orthosli
  */
 orthoslip_status orthoslip_solution_error_estimate(const orthoslip_solution *s, double *c_error);
 
+/**
+ * Evaluates the stresses inside the solid at n points (x[i], y[i]) in units of the punch
+ * half-width a, dimensionless per P/a. The solid is y < 0; y = 0 gives the surface values
+ * as limits from inside. Tension is positive. On the punch at y = 0: syy = -p, sxy = q
+ * (q: the traction on the solid in +x); at the punch edges themselves (|x| = 1, y = 0)
+ * sxx = syy = -INFINITY and sxy = +-INFINITY (0 when mu = 0). Each method's stresses are
+ * those of its own tractions (Lekhnistskii's potentials of the half-plane). Near the
+ * surface at the punch edge, sxx(x, 0) ~ -k [delta^2 + (1 - nu) mu^2] (1 - |x|)^(-g) with the
+ * (k, g) of orthoslip_solution_edge_intensity (GOODMAN: -k delta^2 (1 - |x|)^(-1/2)).
+ * `x` or `y` may alias an output (in-place evaluation).
+ *
+ * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER (any pointer NULL, also when n = 0) or
+ * ORTHOSLIP_ERROR_INVALID_ARGUMENT (some x[i] or y[i] NaN or infinite, or y[i] > 0); on
+ * failure nothing is written.
+ *
+ * # Safety
+ * `s` must be NULL or a live solution; `x` and `y` NULL or valid for n reads; `sxx`, `syy`
+ * and `sxy` NULL or valid for n writes each.
+ */
+orthoslip_status orthoslip_solution_stresses(const orthoslip_solution *s,
+                                             const double *x,
+                                             const double *y,
+                                             size_t n,
+                                             double *sxx,
+                                             double *syy,
+                                             double *sxy);
+
+/**
+ * Writes the punch-edge singularity of the solution's pressure, p(x) ~ k (1 - |x|)^(-g) as
+ * |x| -> 1, k dimensionless per P/a; on a slip edge q ~ mu p sgn x. g = 1/2 - arctan(bp mu)/pi
+ * (GOODMAN, whose p = 1/(pi sqrt(1 - x^2)) ignores the coupling: g = 1/2, k = 1/(pi sqrt 2)).
+ *
+ * Returns ORTHOSLIP_OK or ORTHOSLIP_ERROR_NULL_POINTER (nothing written).
+ *
+ * # Safety
+ * `s` must be NULL or a live solution; `k` and `g` NULL or valid for one write each.
+ */
+orthoslip_status orthoslip_solution_edge_intensity(const orthoslip_solution *s,
+                                                   double *k,
+                                                   double *g);
+
+/**
+ * Evaluates the tangential surface displacement of the solid relative to the punch at n
+ * points x[i] (units of a), per P/E (E: the effective modulus of
+ * orthoslip_material_effective; P: the normal force per unit thickness). It is 0 on the stick
+ * zone and the slip on the slip zones (negative for x > c: the solid slides inward), and odd
+ * in x; beyond the punch (|x| > 1) it is the surface displacement relative to the punch.
+ * `x` may alias `slip` (in-place evaluation).
+ *
+ * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER (any pointer NULL, also when n = 0) or
+ * ORTHOSLIP_ERROR_INVALID_ARGUMENT (some x[i] NaN or infinite); on failure nothing is
+ * written.
+ *
+ * # Safety
+ * `s` must be NULL or a live solution; `x` NULL or valid for n reads; `slip` NULL or valid
+ * for n writes.
+ */
+orthoslip_status orthoslip_solution_slip(const orthoslip_solution *s,
+                                         const double *x,
+                                         size_t n,
+                                         double *slip);
+
 #ifdef __cplusplus
 }  // extern "C"
 #endif  // __cplusplus

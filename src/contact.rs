@@ -1,6 +1,9 @@
 //! A contact scene (material, friction, method, tolerance) and its solution.
 
+use std::sync::OnceLock;
+
 use crate::error::{Error, Result};
+use crate::field::{Expand, Field};
 use crate::material::Material;
 use crate::model_error::{self, Approximation};
 use crate::problem::{Coupling, Profile, StickEdge, validate_tolerance};
@@ -97,7 +100,7 @@ impl Contact {
             m => m,
         };
         let tol = self.tolerance;
-        let profile: Box<dyn Profile> = match method {
+        let profile: Box<dyn Solved> = match method {
             Method::Goodman => Box::new(goodman::solve(&k)?),
             Method::Spence => Box::new(spence::solve(&k)?),
             Method::Coupled | Method::Auto => Box::new(coupled::solve(&k, tol)?),
@@ -113,6 +116,8 @@ impl Contact {
             method,
             profile,
             c_error,
+            material: self.material,
+            field: OnceLock::new(),
         })
     }
 
@@ -138,9 +143,16 @@ fn model_bound(a: Approximation, k: &Coupling) -> f64 {
 #[derive(Debug)]
 pub struct Solution {
     method: Method,
-    profile: Box<dyn Profile>,
+    profile: Box<dyn Solved>,
     c_error: f64,
+    material: Material,
+    /// The stress field, built on first use (then read-only: safe from many threads).
+    field: OnceLock<Field>,
 }
+
+/// What every method's solution provides: its tractions and their expansion.
+trait Solved: Profile + Expand {}
+impl<T: Profile + Expand> Solved for T {}
 
 impl Solution {
     /// The method that produced this solution (never [`Method::Auto`]).
@@ -181,5 +193,59 @@ impl Solution {
     /// edges x = +-1 where p ~ (1 - |x|)^(-g). x must not be NaN.
     pub fn tractions(&self, x: f64) -> (f64, f64) {
         self.profile.tractions(x)
+    }
+
+    /// The field solution of this solution's own tractions, built on first use.
+    fn field(&self) -> &Field {
+        self.field.get_or_init(|| {
+            Field::new(
+                self.profile.expansion(),
+                &self.material.constants(),
+                self.c(),
+            )
+        })
+    }
+
+    /// Stresses (sxx, syy, sxy) per P/a inside the solid at (x, y) in units of the punch
+    /// half-width a, the solid being y < 0; y = 0 gives the surface values as limits from
+    /// inside (syy = -p, sxy = q on the punch). Tension is positive. At the punch edges
+    /// (|x| = 1, y = 0) sxx = syy = -infinity and sxy = +-infinity (0 when mu = 0).
+    /// The first call builds the field of the solution's tractions (a fraction of a
+    /// millisecond); later calls cost about a microsecond per point.
+    ///
+    /// Errors: `InvalidArgument` for NaN or infinite coordinates or y > 0.
+    pub fn stresses(&self, x: f64, y: f64) -> Result<[f64; 3]> {
+        if !(x.is_finite() && y.is_finite()) {
+            return Err(Error::InvalidArgument(format!(
+                "point ({x}, {y}) must have finite coordinates"
+            )));
+        }
+        if y > 0.0 {
+            return Err(Error::InvalidArgument(format!(
+                "point ({x}, {y}) is outside the solid (y must be <= 0)"
+            )));
+        }
+        Ok(self.field().stresses(x, y))
+    }
+
+    /// The punch-edge singularity of this solution's pressure: p ~ k (1 - |x|)^(-g) as
+    /// |x| -> 1, (k, g) with k per P/a. On a slip edge q ~ mu p sgn x. g is the method's own
+    /// exponent: 1/2 - arctan(bp mu) / pi, and 1/2 for GOODMAN (whose p = 1/(pi sqrt(1 - x^2))
+    /// has k = 1/(pi sqrt 2)).
+    pub fn edge_intensity(&self) -> (f64, f64) {
+        self.field().edge_intensity()
+    }
+
+    /// Tangential surface displacement of the solid relative to the punch at x (units of a),
+    /// per P/E (E: the effective modulus of [`Material::constants`], P the normal force per
+    /// unit thickness): 0 on the stick zone, the slip on the slip zones (negative for x > c:
+    /// the solid slides inward), odd in x; beyond the punch the surface displacement.
+    ///
+    /// Errors: `InvalidArgument` for NaN or infinite x.
+    pub fn slip(&self, x: f64) -> Result<f64> {
+        if !x.is_finite() {
+            return Err(Error::InvalidArgument(format!("x = {x} is not finite")));
+        }
+        Ok(self.field().slip(x))
     }
 }

@@ -8,6 +8,7 @@ use std::f64::consts::PI;
 use ellip::{elliprf, elliprj};
 
 use crate::error::{Error, Result};
+use crate::field::{Expand, Expansion, Exponents, sample};
 use crate::problem::{Coupling, Profile, StickEdge};
 
 /// Jacobi theta functions (theta2, theta3, theta4) of a nome 0 <= q <= exp(-pi), summed
@@ -108,6 +109,20 @@ impl GoodmanSolution {
             (self.kk + n / 3.0 * elliprj(0.0, self.c2, 1.0, d2 / w).unwrap_or(f64::NAN)) / (PI * w);
         let k = &self.coupling;
         2.0 * x / PI * d2.sqrt() * (k.mu * j2 - k.bq * j1)
+    }
+}
+
+/// p = p0 has the punch-edge exponent 1/2 and is analytic across c; q - mu p ~ sqrt(c - x)
+/// on the stick side (the elliptic-integral form of `q_stick`).
+impl Expand for GoodmanSolution {
+    fn expansion(&self) -> Expansion {
+        sample(
+            self,
+            Exponents {
+                edge: 0.5,
+                stick: 0.5,
+            },
+        )
     }
 }
 

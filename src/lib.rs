@@ -26,6 +26,9 @@ pub mod problem;
 // The numerical tools the methods share.
 pub(crate) mod numerics;
 
+// The half-plane's field solution under any method's tractions.
+pub(crate) mod field;
+
 // The methods.
 pub mod coupled;
 pub mod goodman;

@@ -221,3 +221,18 @@ fn spence_residuals() {
 fn coupled_residuals() {
     check_program("coupled_residuals");
 }
+
+#[test]
+fn field_flamant() {
+    check_program("field_flamant");
+}
+
+#[test]
+fn field_slip() {
+    check_program("field_slip");
+}
+
+#[test]
+fn field_errors() {
+    check_program("field_errors");
+}

@@ -262,3 +262,126 @@ pub fn heatmap(
     root.present()?;
     Ok(())
 }
+
+/// A filled contour map of a field over a regular grid (linear x and y; `values[j][i]` at
+/// (xs[i], ys[j])): `bands` equal bands of the value across `span` (values beyond it take the
+/// end bands: singular fields are clipped; NaN is grey), each cell coloured by its band (runs
+/// of equal band along a row drawn as one rectangle), and the band edges drawn as contour
+/// lines (marching squares: in each grid cell the level's crossings of the cell edges, by
+/// linear interpolation, joined pairwise). A colour bar shows the bands; `outline` is drawn on
+/// top (e.g. the punch) as a thick red line.
+#[allow(clippy::too_many_arguments)]
+pub fn contour_map(
+    path: &str,
+    title: &str,
+    (x_desc, xs): (&str, &[f64]),
+    (y_desc, ys): (&str, &[f64]),
+    values: &[Vec<f64>],
+    span: (f64, f64),
+    bands: usize,
+    outline: &[(f64, f64)],
+) -> Result<(), Box<dyn std::error::Error>> {
+    let (lo, hi) = span;
+    let (nx, ny) = (xs.len(), ys.len());
+    let width = (hi - lo) / bands as f64;
+    let band = |v: f64| ((v - lo) / width).floor().clamp(0.0, bands as f64 - 1.0) as usize;
+    let color =
+        |b: usize| ViridisRGB::get_color_normalized(lo + (b as f64 + 0.5) * width, lo, hi).filled();
+    let grey = RGBColor(200, 200, 200).filled();
+    let root = SVGBackend::new(path, (960, 560)).into_drawing_area();
+    root.fill(&WHITE)?;
+    let (main, bar) = root.split_horizontally(860);
+    let mut chart = ChartBuilder::on(&main)
+        .caption(title, ("sans-serif", 20))
+        .margin(12)
+        .x_label_area_size(45)
+        .y_label_area_size(60)
+        .build_cartesian_2d(xs[0]..xs[nx - 1], ys[0]..ys[ny - 1])?;
+    chart
+        .configure_mesh()
+        .x_desc(x_desc)
+        .y_desc(y_desc)
+        .disable_mesh()
+        .draw()?;
+    // cell i of a grid axis spans the midpoints to its neighbours
+    let cell = |v: &[f64], i: usize| {
+        let a = if i == 0 {
+            v[0]
+        } else {
+            0.5 * (v[i - 1] + v[i])
+        };
+        let b = if i + 1 == v.len() {
+            v[i]
+        } else {
+            0.5 * (v[i] + v[i + 1])
+        };
+        (a, b)
+    };
+    let mut rects = Vec::new();
+    for (j, row) in values.iter().enumerate() {
+        let (y0, y1) = cell(ys, j);
+        let key = |v: f64| (!v.is_nan()).then(|| band(v));
+        let mut start = 0;
+        for i in 1..=nx {
+            if i == nx || key(row[i]) != key(row[start]) {
+                let style = key(row[start]).map_or(grey, color);
+                rects.push(Rectangle::new(
+                    [(cell(xs, start).0, y0), (cell(xs, i - 1).1, y1)],
+                    style,
+                ));
+                start = i;
+            }
+        }
+    }
+    chart.draw_series(rects)?;
+    for l in 1..bands {
+        let level = lo + l as f64 * width;
+        let mut segments = Vec::new();
+        for j in 0..ny - 1 {
+            for i in 0..nx - 1 {
+                let corners = [(i, j), (i + 1, j), (i + 1, j + 1), (i, j + 1)];
+                let mut cross = Vec::new();
+                for k in 0..4 {
+                    let ((ia, ja), (ib, jb)) = (corners[k], corners[(k + 1) % 4]);
+                    let (va, vb) = (values[ja][ia], values[jb][ib]);
+                    if va.is_finite() && vb.is_finite() && (va - level) * (vb - level) < 0.0 {
+                        let s = (level - va) / (vb - va);
+                        cross.push((
+                            xs[ia] + s * (xs[ib] - xs[ia]),
+                            ys[ja] + s * (ys[jb] - ys[ja]),
+                        ));
+                    }
+                }
+                for pair in cross.chunks_exact(2) {
+                    segments.push(PathElement::new(
+                        vec![pair[0], pair[1]],
+                        BLACK.mix(0.6).stroke_width(1),
+                    ));
+                }
+            }
+        }
+        chart.draw_series(segments)?;
+    }
+    if !outline.is_empty() {
+        chart.draw_series(std::iter::once(PathElement::new(
+            outline.to_vec(),
+            RGBColor(214, 39, 40).stroke_width(4),
+        )))?;
+    }
+    let mut cb = ChartBuilder::on(&bar)
+        .margin_top(40)
+        .margin_bottom(57)
+        .y_label_area_size(50)
+        .build_cartesian_2d(0.0..1.0, lo..hi)?;
+    cb.configure_mesh()
+        .disable_x_mesh()
+        .disable_x_axis()
+        .y_label_formatter(&|v| format!("{v:.2}"))
+        .draw()?;
+    cb.draw_series((0..bands).map(|b| {
+        let a = lo + b as f64 * width;
+        Rectangle::new([(0.0, a), (1.0, a + width)], color(b))
+    }))?;
+    root.present()?;
+    Ok(())
+}

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """The default scene through the Python package: a carbon/epoxy ply (plane stress) under a
 rigid flat punch with mu = 0.3. Prints what c_examples/default_scene.c prints, in the same
-format: the constants, c, 1 - c, the method used, its error estimate and p, q at 21 points.
+format: the constants, c, 1 - c, the method used, its error estimate, p, q at 21 points, the
+edge intensity, the stresses at (0, -0.5) and the slip at x = 0.99.
 
 Run it after ``pip install ./python``; a failure raises orthoslip.OrthoslipError.
 """
@@ -29,3 +30,11 @@ p, q = solution.tractions(x)
 print(f"{'x':>10} {'p':>24} {'q':>24}")
 for row in zip(x, p, q):
     print("{:10.4f} {:24.17g} {:24.17g}".format(*row))
+
+# what engineers compute from it: the edge singularity p ~ k (1 - |x|)^(-g), the stresses
+# half a punch width below the centre, the slip at x = 0.99
+k, g = solution.edge_intensity()
+sxx, syy, sxy = solution.stresses(0.0, -0.5)
+print(f"edge intensity: k = {k:.17g}, g = {g:.17g}")
+print(f"stresses at (0, -0.5): sxx = {sxx:.17g}, syy = {syy:.17g}, sxy = {sxy:.17g}")
+print(f"slip at x = 0.99: {solution.slip(0.99):.17g}")

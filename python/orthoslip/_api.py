@@ -226,6 +226,20 @@ class Solution:
         self.method = Method(get("orthoslip_method", lib.orthoslip_solution_method, handle))
         self.error_estimate: float = get("double", lib.orthoslip_solution_error_estimate, handle)
 
+    def _evaluate(self, function: Any, inputs: list[npt.ArrayLike], outputs: int) -> list[Any]:
+        """Calls ``function(handle, in_0, ..., n, out_0, ...)`` of the C ABI over the inputs
+        broadcast against each other; returns the outputs in their shape (NumPy scalars for
+        scalar inputs)."""
+        arrays = np.broadcast_arrays(*(np.asarray(v, dtype=np.float64) for v in inputs))
+        shape = arrays[0].shape
+        flat = [np.ascontiguousarray(a.ravel()) for a in arrays]
+        out = [np.empty(flat[0].size) for _ in range(outputs)]
+        if flat[0].size:
+            buffers = [ffi.from_buffer("double[]", a) for a in flat]
+            results = [ffi.from_buffer("double[]", a) for a in out]
+            check(function(self._handle, *buffers, flat[0].size, *results))
+        return [a.reshape(shape)[()] for a in out]
+
     def tractions(self, x: npt.ArrayLike) -> tuple[Any, Any]:
         """The tractions (p(x), q(x)) per P/a at ``x`` (any shape; units of a):
         sigma_yy(x, 0) = -(P/a) p(x/a) and sigma_xy(x, 0) = (P/a) q(x/a) (paper eq. (6)).
@@ -237,21 +251,42 @@ class Solution:
         Raises:
             InvalidArgumentError: some x is NaN or infinite.
         """
-        xs = np.asarray(x, dtype=np.float64)
-        flat = np.ascontiguousarray(xs.ravel())
-        p = np.empty_like(flat)
-        q = np.empty_like(flat)
-        if flat.size:
-            check(
-                lib.orthoslip_solution_tractions(
-                    self._handle,
-                    ffi.from_buffer("double[]", flat),
-                    flat.size,
-                    ffi.from_buffer("double[]", p),
-                    ffi.from_buffer("double[]", q),
-                )
-            )
-        return p.reshape(xs.shape)[()], q.reshape(xs.shape)[()]
+        p, q = self._evaluate(lib.orthoslip_solution_tractions, [x], 2)
+        return p, q
+
+    def stresses(self, x: npt.ArrayLike, y: npt.ArrayLike) -> tuple[Any, Any, Any]:
+        """The stresses (sxx, syy, sxy) per P/a inside the solid at the points (x, y) in
+        units of a (``x`` and ``y`` broadcast against each other). The solid is y < 0;
+        y = 0 gives the surface values as limits from inside (syy = -p, sxy = q on the
+        punch). Tension is positive. Each method's stresses are those of its own tractions.
+        At the punch edges on the surface (|x| = 1, y = 0) sxx = syy = -inf.
+
+        Raises:
+            InvalidArgumentError: some x or y is NaN or infinite, or some y > 0.
+        """
+        sxx, syy, sxy = self._evaluate(lib.orthoslip_solution_stresses, [x, y], 3)
+        return sxx, syy, sxy
+
+    def edge_intensity(self) -> tuple[float, float]:
+        """(k, g) of the punch-edge singularity p ~ k (1 - |x|)^(-g) (k per P/a); on a slip
+        edge q ~ mu p sgn x. g = 1/2 - arctan(bp mu)/pi (GOODMAN: 1/2). The surface stress
+        there, sxx(x, 0) ~ -k (delta^2 + (1 - nu) mu^2) (1 - |x|)^(-g), has the same exponent."""
+        k = ffi.new("double *")
+        g = ffi.new("double *")
+        check(lib.orthoslip_solution_edge_intensity(self._handle, k, g))
+        return k[0], g[0]
+
+    def slip(self, x: npt.ArrayLike) -> Any:
+        """The tangential surface displacement of the solid relative to the punch at ``x``
+        (units of a), per P/E (E: ``Material.effective().e``; P: the normal force per unit
+        thickness): 0 on the stick zone, the slip on the slip zones (negative for x > c: the
+        solid slides inward), odd in x.
+
+        Raises:
+            InvalidArgumentError: some x is NaN or infinite.
+        """
+        (u,) = self._evaluate(lib.orthoslip_solution_slip, [x], 1)
+        return u
 
     def plot(self, ax: Axes | None = None, points: int = 801) -> Axes:
         """Plots p and q across the punch, with the stick zone shaded, on ``ax`` (a new

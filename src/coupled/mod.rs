@@ -31,6 +31,7 @@
 //! (100-350 unknowns at the last); `cargo run --release --example coupled_timing` measures
 //! the cost.
 
+mod expansion;
 mod mesh;
 mod system;
 

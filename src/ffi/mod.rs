@@ -15,6 +15,8 @@
 mod contact;
 mod material;
 mod solution;
+// after `solution`: its functions come last in the header (the ABI is append-only)
+mod field;
 
 use std::any::Any;
 use std::cell::RefCell;

@@ -23,6 +23,8 @@ mod smoothing_newton;
 mod stick_edge;
 
 use crate::error::{Error, Result};
+use crate::field::{Expand, Expansion, Family, Panel, fit};
+use crate::numerics::cauchy::Weight;
 use crate::problem::{Coupling, Profile, StickEdge, validate_tolerance};
 use discretisation::Grid;
 use smoothing_newton::Controls;
@@ -278,6 +280,51 @@ impl LcpSolution {
         let h = self.grid.h;
         let (a, b) = (i as f64 * h, (i + 1) as f64 * h);
         ((1.0 - a).powf(1.0 - g) - (1.0 - b).powf(1.0 - g)) / ((1.0 - g) * h)
+    }
+}
+
+/// The LCP's tractions as `tractions` reports them ([`Profile::half_line_tractions`]): the
+/// regular parts p / w, q / w interpolated linearly between the grid midpoints, times
+/// w = (1 - x)^(-g). One panel between each two midpoints (and [0, mid_0], where q ramps to
+/// q(0) = 0), fitted in Legendre series (w is analytic there); on the last, [mid_{n-1}, 1],
+/// the regular parts are constant and, on [-1, 1], (1 - x)^(-g) = r^(-g) (1 - t)^(-g) with r
+/// the panel's half-width: one family weighted (1 - t)^(-g).
+impl Expand for LcpSolution {
+    fn expansion(&self) -> Expansion {
+        let n = self.grid.n;
+        let mut breaks = vec![0.0];
+        breaks.extend((0..n).map(|j| self.grid.mid(j)));
+        breaks.push(1.0);
+        let g = self.coupling.edge_exponent();
+        let panels = breaks
+            .windows(2)
+            .map(|w| {
+                let (a, b) = (w[0], w[1]);
+                let (m, r) = (0.5 * (a + b), 0.5 * (b - a));
+                let family = if b == 1.0 {
+                    let j = n - 1;
+                    let scale = r.powf(-g) / self.weight_average(j);
+                    Family {
+                        weight: Weight::Right(-g),
+                        p: vec![scale * self.p[j]],
+                        q: vec![scale * self.q[j]],
+                    }
+                } else {
+                    let at = |t: f64| self.half_line_tractions(m + r * t);
+                    Family {
+                        weight: Weight::One,
+                        p: fit(|t| at(t).0),
+                        q: fit(|t| at(t).1),
+                    }
+                };
+                Panel {
+                    a,
+                    b,
+                    families: vec![family],
+                }
+            })
+            .collect();
+        Expansion { panels }
     }
 }
 

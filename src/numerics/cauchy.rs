@@ -3,17 +3,29 @@
 //! (1 + t)^e with e in (-1, 1) (the local exponents g, g - 1, -g of the contact tractions,
 //! THEORY.md section 5).
 //!
-//! Near the interval (|y| <= 1.1) C_0 is evaluated in closed form and the rest follow from the
-//! exact recurrence (k+1) C_{k+1} + k C_{k-1} = (2k+1) (y C_k - M_k), M_k = int w P_k in
-//! closed form (forward recurrence: absolute error <= eps rho(y)^k <= 1e-11 for |y| <= 1.1,
-//! k < 26); farther away a Gauss-Jacobi rule for w, sized to the distance and the degree, is
-//! exact to rounding. For real y only (y off the interval ends).
+//! Real y (the solvers): near the interval (|y| <= 1.1) C_0 is evaluated in closed form and
+//! the rest follow from the exact recurrence (k+1) C_{k+1} + k C_{k-1} = (2k+1) (y C_k - M_k),
+//! M_k = int w P_k in closed form (forward recurrence: absolute error <= eps rho(y)^k <= 1e-11
+//! for |y| <= 1.1, k < 26); farther away a Gauss-Jacobi rule for w, sized to the distance and
+//! the degree, is exact to rounding. y must be off the interval ends.
+//!
+//! Complex zeta (the stress field, [`near_transforms`]): the same closed form C_0 continued
+//! off the axis through the Lerch sum Phi(w, 1, a) and the same recurrence, plus the
+//! derivatives C_k' (C_0' in closed form, then the differentiated recurrence). Meant for the
+//! near field, Bernstein parameter rho(zeta) < [`NEAR_RHO`] (forward recurrence: absolute
+//! error <= eps rho^k <= 4e-12 for k < 26); farther away the caller's Gauss rules are exact.
+//! A point of the segment itself is the limit from below (zero imaginary part -0.0).
 
 use std::f64::consts::PI;
 
+use faer::complex::Complex;
+
 use super::orthopoly::{bonnet, jacobi_mass, legendre};
 use super::quadrature::gauss_jacobi;
-use super::special::hyp2f1;
+use super::special::{hyp2f1, lerch_phi1};
+
+/// Complex numbers (faer's re-export of num-complex).
+pub(crate) type C64 = Complex<f64>;
 
 /// Far-field bands: the |y| above which each rule is used. A rule of m nodes integrates
 /// P_k(t) / (y - t) with error ~ rho^(k - 2m), rho = |y| + sqrt(y^2 - 1) at the band's lower
@@ -59,7 +71,7 @@ impl Weight {
     }
 
     /// The Gauss rule with m nodes for this weight (ascending nodes).
-    fn rule(self, m: usize) -> (Vec<f64>, Vec<f64>) {
+    pub(crate) fn rule(self, m: usize) -> (Vec<f64>, Vec<f64>) {
         let (alpha, beta) = self.exponents();
         gauss_jacobi(m, alpha, beta)
     }
@@ -67,7 +79,7 @@ impl Weight {
     /// M_k = int_{-1}^{1} w P_k for k < n: for (1 - t)^e, M_0 = 2^(e+1) / (e + 1) and
     /// M_k = M_{k-1} (k - 1 - e) / (k + 1 + e) (from int (1-t)^e P_k = 2^(e+1) Gamma(e+1)^2 /
     /// (Gamma(e+k+2) Gamma(e+1-k)), Gradshteyn-Ryzhik 7.127); (1 + t)^e by P_k(-t) = (-1)^k P_k(t).
-    fn moments(self, n: usize) -> Vec<f64> {
+    pub(crate) fn moments(self, n: usize) -> Vec<f64> {
         let (e, sign) = match self {
             Weight::One => (0.0, 1.0),
             Weight::Right(e) => (e, 1.0),
@@ -121,6 +133,103 @@ pub(crate) fn end_cauchy(e: f64, z: f64) -> f64 {
         PI * (-z).powf(e) / (PI * a).sin()
     };
     base - end_tail(a, 0.5 * z)
+}
+
+/// Largest Bernstein parameter rho(zeta) = |zeta + sqrt(zeta^2 - 1)| at which
+/// [`near_transforms`] is meant to be used: its forward recurrence loses at most
+/// eps rho^k <= 4e-12 at degree 25, and its Lerch sums converge there (|w - 1/2| <= 0.55 for
+/// w = (1 - zeta) / 2).
+pub(crate) const NEAR_RHO: f64 = 1.5;
+
+/// A point zeta of the complex plane in a panel's local coordinate, with 1 - zeta and
+/// 1 + zeta carried separately so that they keep their relative accuracy next to the ends.
+/// On the segment (zero imaginary part) it stands for the limit from below when the zero is
+/// -0.0 (the sign of zero is kept through every operation below).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Local {
+    /// zeta.
+    pub(crate) zeta: C64,
+    /// 1 - zeta.
+    pub(crate) omz: C64,
+    /// 1 + zeta.
+    pub(crate) opz: C64,
+}
+
+/// E(e, s) = int_0^2 u^e / (u - s) du and its derivative dE/ds for complex s off [0, 2]
+/// (given with 2 - s), e in (-1, 1): for e < 0 the integral over (0, inf),
+/// pi (-s)^e / sin(-pi e), minus the tail over (2, inf), 2^e Phi(s/2, 1, -e); e = 0 the
+/// logarithm; e > 0 reduces to e - 1 by u^e / (u - s) = u^(e-1) + s u^(e-1) / (u - s).
+/// The derivative follows from integrating by parts: dE/ds = -2^e / (2 - s) + e E(e - 1, s),
+/// which for e <= 0 reads -2^e / (2 - s) + (e E(e, s) - 2^e) / s.
+fn end_cauchy_complex(e: f64, s: C64, two_minus_s: C64) -> (C64, C64) {
+    if e > 0.0 {
+        let (lower, _) = end_cauchy_complex(e - 1.0, s, two_minus_s);
+        let value = e.exp2() / e + s * lower;
+        return (value, -e.exp2() / two_minus_s + lower * e);
+    }
+    let value = if e == 0.0 {
+        two_minus_s.ln() - (-s).ln()
+    } else {
+        let whole = (-s).powf(e) * (PI / (-PI * e).sin());
+        whole - lerch_phi1(s * 0.5, two_minus_s * 0.5, -e) * e.exp2()
+    };
+    let slope = -e.exp2() / two_minus_s + (value * e - e.exp2()) / s;
+    (value, slope)
+}
+
+impl Weight {
+    /// C_0(zeta) and C_0'(zeta) for complex zeta off the segment (or on it, from below):
+    /// E(e, 1 - zeta) for (1 - t)^e and 1, -E(e, 1 + zeta) for (1 + t)^e; C_0' = -E'(e, s)
+    /// in both cases (s the distance to the weighted end).
+    fn cauchy0_complex(self, l: Local) -> (C64, C64) {
+        let (value, slope) = match self {
+            Weight::One => end_cauchy_complex(0.0, l.omz, l.opz),
+            Weight::Right(e) => end_cauchy_complex(e, l.omz, l.opz),
+            Weight::Left(e) => {
+                let (v, d) = end_cauchy_complex(e, l.opz, l.omz);
+                (-v, d)
+            }
+        };
+        (value, -slope)
+    }
+}
+
+/// C_k(zeta) for k < out.len() (and C_k'(zeta) into `slope` when given, same length) for
+/// complex zeta in the near field (rho(zeta) < [`NEAR_RHO`]): C_0 in closed form, then
+/// (k+1) C_{k+1} = (2k+1) (zeta C_k - M_k) - k C_{k-1} and its derivative
+/// (k+1) C'_{k+1} = (2k+1) (C_k + zeta C'_k) - k C'_{k-1}. `moments` are M_k = int w P_k
+/// ([`Weight::moments`], at least out.len() of them).
+pub(crate) fn near_transforms(
+    weight: Weight,
+    moments: &[f64],
+    l: Local,
+    out: &mut [C64],
+    slope: Option<&mut [C64]>,
+) {
+    let n = out.len();
+    if n == 0 {
+        return;
+    }
+    let (c0, d0) = weight.cauchy0_complex(l);
+    let z = l.zeta;
+    out[0] = c0;
+    if n > 1 {
+        out[1] = z * c0 - moments[0];
+    }
+    for k in 1..n - 1 {
+        let (fa, fb) = bonnet(k);
+        out[k + 1] = (z * out[k] - moments[k]) * fa - out[k - 1] * fb;
+    }
+    if let Some(d) = slope {
+        d[0] = d0;
+        if n > 1 {
+            d[1] = c0 + z * d0;
+        }
+        for k in 1..n - 1 {
+            let (fa, fb) = bonnet(k);
+            d[k + 1] = (out[k] + z * d[k]) * fa - d[k - 1] * fb;
+        }
+    }
 }
 
 /// Everything needed to transform one weight's Legendre family: its far-field Gauss rules
@@ -349,6 +458,149 @@ mod tests {
                     (out[k] - (a[k] - b[k])).abs() < 1e-14 * (1.0 + a[k].abs()),
                     "y {y} k {k}"
                 );
+            }
+        }
+    }
+
+    /// Independent reference for complex zeta: int_{-1}^{1} w(t) P_k(t) / (zeta - t)^power dt
+    /// by composite Gauss rules in s = t - xi (xi = Re zeta, so that zeta - t = (zeta - xi) - s
+    /// and the panels tile exactly next to the point) graded towards s = 0 (panels at most
+    /// their distance from zeta wide), with Gauss-Jacobi panels at the weighted ends.
+    fn reference_complex(w: Weight, k: usize, zeta: C64, power: i32) -> C64 {
+        let pk = |t: f64| {
+            let mut v = vec![0.0; k + 1];
+            legendre(t, &mut v);
+            v[k]
+        };
+        let (xi, eta) = (zeta.re.clamp(-1.0, 1.0), zeta.im.abs().max(1e-300));
+        let (lo, hi) = (-1.0 - xi, 1.0 - xi);
+        let mut breaks = vec![lo, hi];
+        for j in 0..60 {
+            let d = 0.5f64.powi(j);
+            breaks.extend([lo + d, hi - d]);
+            let r = eta * 2f64.powi(j);
+            breaks.extend([-r, r]);
+        }
+        breaks.retain(|b| (lo..=hi).contains(b));
+        breaks.sort_by(f64::total_cmp);
+        breaks.dedup();
+        let (a, b) = w.exponents();
+        let (gl, gw) = crate::numerics::quadrature::gauss_legendre(40);
+        let to_point = zeta - xi;
+        let mut sum = C64::new(0.0, 0.0);
+        for p in breaks.windows(2) {
+            let (m, h) = (0.5 * (p[0] + p[1]), 0.5 * (p[1] - p[0]));
+            let ea = if p[1] == hi { a } else { 0.0 };
+            let eb = if p[0] == lo { b } else { 0.0 };
+            let (xs, ws) = if ea != 0.0 || eb != 0.0 {
+                gauss_jacobi(40, ea, eb)
+            } else {
+                (gl.clone(), gw.clone())
+            };
+            for (x, wi) in xs.iter().zip(&ws) {
+                let s = m + h * x;
+                // the weight: exact on an end panel (the rule carries it), else sampled
+                let wt = if ea != 0.0 || eb != 0.0 {
+                    h.powf(ea + eb)
+                } else {
+                    w.at((hi - p[1]) + h * (1.0 - x), (p[0] - lo) + h * (1.0 + x))
+                };
+                sum += (to_point - s).powi(-power) * (h * wi * wt * pk(xi + s));
+            }
+        }
+        sum
+    }
+
+    /// The local point of zeta, the signs of zero imaginary parts kept (1 + (-0.0) would
+    /// round to +0.0).
+    fn local(zeta: C64) -> Local {
+        Local {
+            zeta,
+            omz: C64::new(1.0 - zeta.re, -zeta.im),
+            opz: C64::new(1.0 + zeta.re, zeta.im),
+        }
+    }
+
+    /// The complex closed forms plus recurrence against the graded quadrature, at points of
+    /// the near field down to 1e-7 from the segment, above and below it, and their
+    /// derivatives.
+    #[test]
+    fn complex_transforms_match_quadrature() {
+        let n = 20;
+        for w in [
+            Weight::One,
+            Weight::Right(-0.37),
+            Weight::Left(0.37),
+            Weight::Right(0.5),
+            Weight::Left(-0.45),
+            Weight::Right(-0.05),
+        ] {
+            let m = w.moments(n);
+            let (mut out, mut d) = (vec![C64::new(0.0, 0.0); n], vec![C64::new(0.0, 0.0); n]);
+            for zeta in [
+                C64::new(0.3, -1e-7),
+                C64::new(-0.999, -1e-5),
+                C64::new(0.9999, -2e-6),
+                C64::new(1.0 + 1e-6, -1e-6),
+                C64::new(-1.02, -0.01),
+                C64::new(0.0, -0.4),
+                C64::new(0.5, 0.3),
+                C64::new(1.05, 0.05),
+                C64::new(-0.6, -0.2),
+            ] {
+                near_transforms(w, &m, local(zeta), &mut out, Some(&mut d));
+                for k in [0usize, 1, 2, 7, 13, 19] {
+                    let r = reference_complex(w, k, zeta, 1);
+                    let err = (out[k] - r).norm();
+                    assert!(
+                        err < 2e-12 * (1.0 + r.norm()),
+                        "{w:?} {zeta} k {k}: {} vs {r}",
+                        out[k]
+                    );
+                    let rd = -reference_complex(w, k, zeta, 2);
+                    let err = (d[k] - rd).norm();
+                    // the derivative recurrence amplifies by about k rho^k (2e-11 at k = 19)
+                    assert!(
+                        err < 5e-11 * (1.0 + rd.norm()) * (1.0 + 1.0 / zeta.im.abs()),
+                        "{w:?} {zeta} k {k}: slope {} vs {rd}",
+                        d[k]
+                    );
+                }
+            }
+        }
+    }
+
+    /// On the segment with a -0.0 imaginary part the complex transform is the limit from
+    /// below: the real principal value (the closed form above) plus i pi w(y) P_k(y); off the
+    /// segment on the real line it is the real transform.
+    #[test]
+    fn complex_transforms_on_the_axis() {
+        let n = 16;
+        for w in [Weight::One, Weight::Right(-0.3), Weight::Left(0.6)] {
+            let fam = WeightedFamily::new(w, n);
+            let (mut real, mut leg) = (vec![0.0; n], vec![0.0; n]);
+            let mut out = vec![C64::new(0.0, 0.0); n];
+            for y in [-1.08, -0.999, -0.4, 0.0, 0.3, 0.99999, 1.001, 1.07] {
+                let zeta = C64::new(y, -0.0);
+                near_transforms(w, &fam.moments, local(zeta), &mut out, None);
+                fam.cauchy(y, &mut real);
+                legendre(y, &mut leg);
+                let weight = if y.abs() < 1.0 {
+                    w.at(1.0 - y, 1.0 + y)
+                } else {
+                    0.0
+                };
+                for k in 0..n {
+                    let im = PI * weight * leg[k];
+                    let scale = 1.0 + real[k].abs() + im.abs();
+                    assert!(
+                        (out[k].re - real[k]).abs() < 2e-12 * scale,
+                        "{w:?} y {y} k {k}: {} vs {}",
+                        out[k],
+                        real[k]
+                    );
+                    assert!((out[k].im - im).abs() < 2e-12 * scale, "{w:?} y {y} k {k}");
+                }
             }
         }
     }

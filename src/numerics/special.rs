@@ -1,5 +1,6 @@
 //! Special functions: Gamma, ln Gamma, the Beta function, digamma, the difference quotient of
-//! ln Gamma, and the Gauss hypergeometric function 2F1 in the cases the solvers meet.
+//! ln Gamma, the Gauss hypergeometric function 2F1 in the cases the solvers meet, and the
+//! Lerch sum Phi(w, 1, a) of complex argument (the complex Cauchy transforms' closed forms).
 //!
 //! Gamma and ln Gamma are libm's `tgamma` and `lgamma`. Measured against mpmath on 4000
 //! points of (1e-3, 170): `tgamma` within 3.7 ulp (the former Stirling-series Gamma here: 12.6)
@@ -7,6 +8,8 @@
 //! Digamma and the ln Gamma quotient use Stirling's series with one coefficient table.
 
 use std::f64::consts::PI;
+
+use faer::complex::Complex;
 
 /// Gamma(x) for 0 < x < 171.6 (libm's `tgamma`).
 pub(crate) fn gamma(x: f64) -> f64 {
@@ -177,6 +180,48 @@ pub(crate) fn hyp2f1(a: f64, b: f64, e: f64, z: f64, one_minus_z: f64, ln_one_mi
     }
 }
 
+/// Largest |w| (resp. |1 - w|) where [`lerch_phi1`] sums its series about 0 (resp. 1):
+/// 0.6^75 ~ 2e-17. The two discs cover the Cauchy transforms' near field (|w - 1/2| <= 0.55,
+/// see `numerics::cauchy`).
+const LERCH_DISC: f64 = 0.6;
+
+/// Phi(w, 1, a) = sum_{n >= 0} w^n / (n + a) = 2F1(1, a; 1 + a; w) / a for 0 < a <= 1 and
+/// complex w with |w| <= 0.6 or |1 - w| <= 0.6 (given with 1 - w to full accuracy), the
+/// principal branch (cut w >= 1; a point on the cut is the limit from the side of the sign of
+/// its zero imaginary part). Near w = 1, DLMF 15.8.10 with (a, b) = (1, a) gives
+///   Phi = sum_k (a)_k / k! [psi(k + 1) - psi(a + k) - ln(1 - w)] (1 - w)^k.
+pub(crate) fn lerch_phi1(w: Complex<f64>, one_minus_w: Complex<f64>, a: f64) -> Complex<f64> {
+    let mut sum = Complex::new(0.0, 0.0);
+    if w.norm() <= LERCH_DISC {
+        let mut power = Complex::new(1.0, 0.0);
+        for n in 0..MAX_TERMS {
+            let term = power / (n as f64 + a);
+            sum += term;
+            if term.norm() <= SERIES_TOL * sum.norm() {
+                break;
+            }
+            power *= w;
+        }
+        return sum;
+    }
+    let log = one_minus_w.ln();
+    let (mut r, mut power) = (1.0, Complex::new(1.0, 0.0));
+    // psi(k + 1) - psi(a + k), updated by psi(x + 1) = psi(x) + 1/x
+    let mut psi = digamma(1.0) - digamma(a);
+    for k in 0..MAX_TERMS {
+        let kf = k as f64;
+        let term = power * r * (Complex::new(psi, 0.0) - log);
+        sum += term;
+        if k > 0 && term.norm() <= SERIES_TOL * sum.norm() {
+            break;
+        }
+        psi += 1.0 / (kf + 1.0) - 1.0 / (a + kf);
+        r *= (a + kf) / (kf + 1.0);
+        power *= one_minus_w;
+    }
+    sum
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -268,5 +313,45 @@ mod tests {
             let ours = hyp2f1(1.0, a, 0.0, z, 1.0 - z, (z - 1.0).ln());
             assert!(rel(ours, mpmath) < 1e-14, "z {z}: {ours} vs {mpmath}");
         }
+    }
+
+    /// Phi(w, 1, 1) = -ln(1 - w) / w, and for a = 1/2: Phi(w, 1, 1/2) = 2 artanh(sqrt w) /
+    /// sqrt(w) (sum w^n / (n + 1/2) = 2 sum (sqrt w)^(2n) / (2n + 1)), through both series and
+    /// on the cut from either side.
+    #[test]
+    fn lerch_closed_forms() {
+        let c = Complex::new;
+        for w in [
+            c(0.3, -0.2),
+            c(-0.5, 0.1),
+            c(0.5, 0.45),
+            c(0.9, -0.3),
+            c(1.3, -1e-30),
+            c(1.3, 0.0),
+            c(1.0 - 1e-12, 0.0),
+            c(0.55, -0.01),
+        ] {
+            let omw = c(1.0, 0.0) - w;
+            let one = lerch_phi1(w, omw, 1.0);
+            let exact = -omw.ln() / w;
+            assert!(
+                (one - exact).norm() < 1e-14 * exact.norm(),
+                "{w}: {one} vs {exact}"
+            );
+            let half = lerch_phi1(w, omw, 0.5);
+            let r = w.sqrt();
+            let exact = ((c(1.0, 0.0) + r).ln() - (omw / (c(1.0, 0.0) + r)).ln()) / r;
+            assert!(
+                (half - exact).norm() < 1e-14 * exact.norm(),
+                "{w}: {half} vs {exact}"
+            );
+        }
+        // the sign of a zero imaginary part picks the side of the cut
+        let (above, below) = (c(1.5, 0.0), c(1.5, -0.0));
+        let (pa, pb) = (
+            lerch_phi1(above, c(-0.5, -0.0), 0.3),
+            lerch_phi1(below, c(-0.5, 0.0), 0.3),
+        );
+        assert!((pa.re - pb.re).abs() < 1e-14 && (pa.im + pb.im).abs() < 1e-14 && pa.im > 0.0);
     }
 }

@@ -13,6 +13,7 @@ mod tests;
 use std::f64::consts::PI;
 
 use crate::error::Result;
+use crate::field::{Expand, Expansion, Exponents, sample};
 use crate::numerics::special::ln_gamma;
 use crate::problem::{Coupling, Profile, StickEdge};
 use compatibility::{Compatibility, Split};
@@ -70,6 +71,20 @@ impl SpenceSolution {
     /// The punch-edge exponent g of p_S ~ (1 - |x|)^(-g).
     pub fn edge_exponent(&self) -> f64 {
         self.g
+    }
+}
+
+/// p_S has the punch-edge exponent g and is analytic across c; q_S - mu p_S ~ sqrt(c - x)
+/// on the stick side ([`stick_shear`]'s arctangent and sqrt(m - y) terms).
+impl Expand for SpenceSolution {
+    fn expansion(&self) -> Expansion {
+        sample(
+            self,
+            Exponents {
+                edge: self.g,
+                stick: 0.5,
+            },
+        )
     }
 }
 

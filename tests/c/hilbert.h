@@ -70,17 +70,29 @@ typedef struct {
     int edge; /* -1: times (t+1)^g, +1: times (1-t)^g, 0: plain */
 } hilbert_integrand;
 
+/* qaws also samples the end points, where only the weighted product is finite: the point
+ * HILBERT_EDGE_OFFSET inside stands for them (edge -1: t = -1, +1: t = 1, 0: none). */
+static inline double edge_point(int edge, double t)
+{
+    if (edge < 0 && t + 1.0 < HILBERT_EDGE_OFFSET) return -1.0 + HILBERT_EDGE_OFFSET;
+    if (edge > 0 && 1.0 - t < HILBERT_EDGE_OFFSET) return 1.0 - HILBERT_EDGE_OFFSET;
+    return t;
+}
+
+/* The factor (t+1)^g (edge -1) or (1-t)^g (edge +1) that cancels qaws' weight, 1 otherwise. */
+static inline double edge_factor(int edge, double g, double t)
+{
+    if (edge < 0) return pow(t + 1.0, g);
+    if (edge > 0) return pow(1.0 - t, g);
+    return 1.0;
+}
+
 static inline double hilbert_integrand_eval(double t, void *params)
 {
     const hilbert_integrand *in = (const hilbert_integrand *)params;
     double v;
-    /* qaws also samples the end points, where only the weighted product is finite: take
-     * the product's limit from HILBERT_EDGE_OFFSET inside. */
-    if (in->edge < 0 && t + 1.0 < HILBERT_EDGE_OFFSET) t = -1.0 + HILBERT_EDGE_OFFSET;
-    if (in->edge > 0 && 1.0 - t < HILBERT_EDGE_OFFSET) t = 1.0 - HILBERT_EDGE_OFFSET;
-    v = field_value(in->field, in->which, t);
-    if (in->edge < 0) v *= pow(t + 1.0, in->field->g);
-    if (in->edge > 0) v *= pow(1.0 - t, in->field->g);
+    t = edge_point(in->edge, t);
+    v = field_value(in->field, in->which, t) * edge_factor(in->edge, in->field->g, t);
     if (in->has_pole) v /= in->x - t;
     return v;
 }
@@ -94,27 +106,34 @@ static inline void hilbert_account(hilbert_quad *h, int status, double abserr)
     }
 }
 
-/* int_a^b of the integrand with edge = -1 (a = -1), +1 (b = 1) or 0. */
-static inline double hilbert_piece(hilbert_quad *h, hilbert_integrand *in, double a, double b)
+/* int_a^b of fn: gsl_integration_qaws with the weight (t - a)^(-g) when edge < 0 (a = -1) or
+ * (b - t)^(-g) when edge > 0 (b = 1), gsl_integration_qag when edge = 0. */
+static inline double quad_piece(hilbert_quad *h, gsl_function *fn, int edge, double g, double a,
+                                double b)
 {
-    gsl_function fn;
     double result = 0.0, abserr = 0.0;
     int status;
-    fn.function = hilbert_integrand_eval;
-    fn.params = in;
-    if (in->edge != 0) {
-        double alpha = in->edge < 0 ? -in->field->g : 0.0;
-        double beta = in->edge > 0 ? -in->field->g : 0.0;
+    if (edge != 0) {
+        double alpha = edge < 0 ? -g : 0.0, beta = edge > 0 ? -g : 0.0;
         gsl_integration_qaws_table *table = gsl_integration_qaws_table_alloc(alpha, beta, 0, 0);
-        status = gsl_integration_qaws(&fn, a, b, table, HILBERT_EPSABS, HILBERT_EPSREL,
+        status = gsl_integration_qaws(fn, a, b, table, HILBERT_EPSABS, HILBERT_EPSREL,
                                       HILBERT_LIMIT, h->work, &result, &abserr);
         gsl_integration_qaws_table_free(table);
     } else {
-        status = gsl_integration_qag(&fn, a, b, HILBERT_EPSABS, HILBERT_EPSREL, HILBERT_LIMIT,
+        status = gsl_integration_qag(fn, a, b, HILBERT_EPSABS, HILBERT_EPSREL, HILBERT_LIMIT,
                                      GSL_INTEG_GAUSS21, h->work, &result, &abserr);
     }
     hilbert_account(h, status, abserr);
     return result;
+}
+
+/* int_a^b of the integrand with edge = -1 (a = -1), +1 (b = 1) or 0. */
+static inline double hilbert_piece(hilbert_quad *h, hilbert_integrand *in, double a, double b)
+{
+    gsl_function fn;
+    fn.function = hilbert_integrand_eval;
+    fn.params = in;
+    return quad_piece(h, &fn, in->edge, in->field->g, a, b);
 }
 
 /* Sorted break points -1 < -1+e <= -c <= c <= 1-e < 1 with e = (1 - max(c, |x|))/2 (so that x

@@ -59,6 +59,19 @@ static inline void solution_tractions_at(const void *ctx, double x, double *p, d
     CHECK_OK(orthoslip_solution_tractions((const orthoslip_solution *)ctx, &x, 1, p, q));
 }
 
+/* The traction profile of solution s (by method, friction mu, bp = A/(pi C)): its tractions,
+ * its stick edge and its edge exponent, 1/2 for Goodman, else 1/2 - arctan(bp mu)/pi. */
+static inline traction_field solution_field(const orthoslip_solution *s, orthoslip_method method,
+                                            double bp, double mu)
+{
+    traction_field f;
+    f.eval = solution_tractions_at;
+    f.ctx = s;
+    CHECK_OK(orthoslip_solution_stick_half_width(s, &f.c));
+    f.g = method == ORTHOSLIP_METHOD_GOODMAN ? 0.5 : 0.5 - atan(bp * mu) / TEST_PI;
+    return f;
+}
+
 /* Points per half of a zone: 10 (20 per zone), 2 in quick mode. */
 static inline int residual_points(void)
 {
@@ -196,12 +209,9 @@ static inline void check_residuals(const test_material *m, double mu, orthoslip_
      * tractions are accurate to about 100 tol; the closed forms ignore the tolerance). */
     CHECK_OK(orthoslip_contact_set_tolerance(contact, 1e-10));
     CHECK_OK(orthoslip_contact_solve(contact, &s));
-    f.eval = solution_tractions_at;
-    f.ctx = s;
-    CHECK_OK(orthoslip_solution_stick_half_width(s, &f.c));
+    f = solution_field(s, method, bp, mu);
     printf("  %s, mu = %g: c = %.6f\n", m->name, mu, f.c);
     fflush(stdout);
-    f.g = method == ORTHOSLIP_METHOD_GOODMAN ? 0.5 : 0.5 - atan(bp * mu) / TEST_PI;
     if (mask & RESIDUAL_INTEGRALS) check_integrals(&h, &f, mu, sum);
     if (mask & RESIDUAL_FRICTION) check_friction(&f, mu, sum);
     if (mask & RESIDUAL_E2) check_e2(&h, &f, &k, sum);

@@ -1,0 +1,105 @@
+//! COUPLED's tractions as the field's [`Expansion`], from its own panels: each panel's blocks
+//! are weighted Legendre families already (the weights carry (1 - x)^(-g), (x - c)^g,
+//! (c - x)^g). The wrong-c modes are left out: their coefficient vanishes at the physical c
+//! (it is the root function), and `tractions` leaves them out at c too. The central panel,
+//! whose series are in Y = 2 x^2 / l^2 - 1, is resampled as a plain panel on [0, l] (p and
+//! q / x are polynomials in x^2, so the fit is exact). q = delta q~.
+
+use super::mesh::{Basis, Pt};
+use super::{CoupledSolution, Discrete};
+use crate::field::{Expand, Expansion, Exponents, Family, Panel, fit, sample};
+
+/// Adds `coef` (times `scale`) as the p or q series of the family with `weight`.
+fn add(
+    families: &mut Vec<Family>,
+    weight: crate::numerics::cauchy::Weight,
+    coef: &[f64],
+    scale: f64,
+    is_q: bool,
+) {
+    let i = match families.iter().position(|f| f.weight == weight) {
+        Some(i) => i,
+        None => {
+            families.push(Family {
+                weight,
+                p: Vec::new(),
+                q: Vec::new(),
+            });
+            families.len() - 1
+        }
+    };
+    let series: Vec<f64> = coef.iter().map(|c| scale * c).collect();
+    if is_q {
+        families[i].q = series;
+    } else {
+        families[i].p = series;
+    }
+}
+
+fn from_discrete(d: &Discrete, delta: f64) -> Expansion {
+    let g = d.k.g;
+    let panels = d
+        .mesh
+        .panels
+        .iter()
+        .map(|panel| {
+            let (a, b) = (panel.a.x, panel.b.x);
+            if panel.central {
+                let (m, h) = (0.5 * (a + b), 0.5 * (b - a));
+                let at = |t: f64| {
+                    let x = m + h * t;
+                    d.eval(Pt { x, u: 1.0 - x })
+                };
+                return Panel {
+                    a,
+                    b,
+                    families: vec![Family {
+                        weight: crate::numerics::cauchy::Weight::One,
+                        p: fit(|t| at(t).0),
+                        q: fit(|t| delta * at(t).1),
+                    }],
+                };
+            }
+            let mut families = Vec::new();
+            let mut col = panel.p_offset;
+            let mut p_blocks = Vec::new();
+            for block in &panel.p {
+                p_blocks.push((block.basis, &d.coef[col..col + block.count]));
+                col += block.count;
+            }
+            let keep = |b: Basis| !matches!(b, Basis::StickWrongC | Basis::SlipWrongC);
+            for &(basis, coef) in p_blocks.iter().filter(|(b, _)| keep(*b)) {
+                add(&mut families, basis.weight(g), coef, 1.0, false);
+                if !panel.stick {
+                    add(&mut families, basis.weight(g), coef, delta * d.k.mu, true);
+                }
+            }
+            let mut col = panel.q_offset;
+            for block in &panel.q {
+                let coef = &d.coef[col..col + block.count];
+                col += block.count;
+                if keep(block.basis) {
+                    add(&mut families, block.basis.weight(g), coef, delta, true);
+                }
+            }
+            Panel { a, b, families }
+        })
+        .collect();
+    Expansion { panels }
+}
+
+impl Expand for CoupledSolution {
+    fn expansion(&self) -> Expansion {
+        match &self.discrete {
+            Some(d) => from_discrete(d, self.delta),
+            // mu = 0: p = p0 exactly, q = 0
+            None => sample(
+                self,
+                Exponents {
+                    edge: 0.5,
+                    stick: 0.5,
+                },
+            ),
+        }
+    }
+}

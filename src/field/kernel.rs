@@ -1,0 +1,600 @@
+//! The Cauchy transforms of a whole traction expansion at a complex point:
+//! G_p(z) = (1/pi) int_{-1}^{1} p(t) / (z - t) dt and G_q(z) the same for q (and their
+//! derivatives), p even and q odd, so that each panel [a, b] of [0, 1] also stands for its
+//! mirror [-b, -a]: G_p(z) = sum g_p(z) - g_p(-z), G_q(z) = sum g_q(z) + g_q(-z) over the
+//! panels' own transforms g.
+//!
+//! Each panel's transform is taken, by the Bernstein parameter rho of z with respect to the
+//! panel (rho + 1/rho = (|z - a| + |z - b|) / h):
+//! - near (rho < [`NEAR_RHO`]): closed form and recurrence ([`near_transforms`]);
+//! - far: the Gauss-Jacobi rule of each family for the band of rho it lies in, sized so that
+//!   the rule is exact to ~1e-16 (error ~ rho^(n - 2m) for degree n and m nodes). With
+//!   Re z >= 0 the mirror panel is farther than the panel itself, so one rule serves both:
+//!   1/(z - x) + 1/(z + x) = 2z / ((z - x)(z + x)) for p, 1/(z - x) - 1/(z + x) =
+//!   2x / ((z - x)(z + x)) for q (Re z < 0 follows from G_p odd, G_q even).
+//!
+//! Points far from the whole contact (|z| >= [`FAR_RADIUS`]) skip the panels: there
+//! G_p(z) = (1/pi) sum_j M_2j / z^(2j+1) and G_q(z) = (1/pi) sum_j M_(2j+1) / z^(2j+2) with the
+//! moments M_k = int_{-1}^{1} f t^k dt (p even, q odd), exact from each family's Gauss rule;
+//! the series converges like |z|^(-k) whatever the tractions' singularities.
+//!
+//! For the slip, the same panels give int_x^1 p and the log potential
+//! L_q(x) = int_{-1}^{1} q(s) ln|x - s| ds on the axis exactly, from each family's
+//! antiderivative anchored at its weighted end ([`Antiderivative`]).
+
+use std::collections::HashMap;
+use std::f64::consts::PI;
+
+use super::expansion::{Expansion, Family};
+use crate::numerics::cauchy::{C64, Local, NEAR_RHO, Weight, near_transforms};
+use crate::numerics::orthopoly::{legendre, legendre_sum};
+use crate::numerics::quadrature::{gauss_jacobi, gauss_legendre};
+
+/// Lower ends of the far bands in rho (the last band reaches to infinity).
+const BANDS: [f64; 8] = [NEAR_RHO, 2.0, 3.0, 5.0, 10.0, 30.0, 100.0, 1000.0];
+
+/// |z| from which the moment series is used, and its length: FAR_RADIUS^(-MOMENTS) ~ 2e-18.
+const FAR_RADIUS: f64 = 1.5;
+const MOMENTS: usize = 100;
+
+/// Largest degree of a family the kernel takes (scratch on the stack).
+pub(crate) const MAX_DEGREE: usize = 72;
+
+/// Nodes of a Gauss rule exact to ~1e-16 for degree-n densities when rho >= rho_min.
+fn band_nodes(rho_min: f64, n: usize) -> usize {
+    ((n as f64 + 16.0 / rho_min.log10()) / 2.0).ceil() as usize
+}
+
+/// Depth standing in for a point exactly at a panel end on the axis: the point is taken this
+/// far below the end (so each of the two panels meeting there sees half of the jump of its
+/// density, as the limit at an end has it; their logarithms, ln(1e-300) ~ -690, still cancel
+/// to ~1e-13).
+const AT_END: f64 = 1e-300;
+
+/// One family prepared for its near-field transforms.
+#[derive(Clone, Debug)]
+struct NearFamily {
+    weight: Weight,
+    p: Vec<f64>,
+    q: Vec<f64>,
+    /// M_k = int w P_k, for max(p.len(), q.len()) degrees.
+    moments: Vec<f64>,
+}
+
+/// A far-field rule of one panel: physical nodes x_j and the weights h W_j p(t_j) / w(t_j)
+/// and h W_j q(t_j) x_j / w(t_j) of all its families together.
+#[derive(Clone, Debug, Default)]
+struct FarRule {
+    x: Vec<f64>,
+    wp: Vec<f64>,
+    wqx: Vec<f64>,
+    wq: Vec<f64>,
+}
+
+/// A family's antiderivative anchored at its weighted end: for 1 and (1 - t)^e,
+/// V(t) = int_t^1 w f = w(t) sum_k r_k P_k(t), and the log potential
+/// Lambda(zeta) = int w f log(zeta - t) dt = M log(zeta + 1) - C[V](zeta) (by parts); for
+/// (1 + t)^e, U(t) = int_{-1}^t w f = w(t) sum_k r_k P_k(t) and
+/// Lambda = M log(zeta - 1) + C[U](zeta). (V / w is (1 - t) times a polynomial, U / w is
+/// (1 + t) times one.) At the anchor itself Re Lambda = M ln 2 - int w R with R = V / w(1 - t)
+/// (resp. U / w(1 + t)): finite where C[V] alone is not.
+#[derive(Clone, Debug)]
+struct Antiderivative {
+    weight: Weight,
+    /// Anchored at t = -1.
+    left: bool,
+    /// Coefficients r of V / w (or U / w) for p and for q, degree one above the family's.
+    rp: Vec<f64>,
+    rq: Vec<f64>,
+    /// M = int w f for p and for q.
+    mass: (f64, f64),
+    /// int w R for p and for q.
+    end: (f64, f64),
+    /// int w P_k for the degrees of r.
+    moments: Vec<f64>,
+}
+
+impl Antiderivative {
+    /// The antiderivatives of the p and q series of `f` (degrees < n).
+    fn new(f: &NearFamily, n: usize) -> Self {
+        let left = matches!(f.weight, Weight::Left(_));
+        let e = match f.weight {
+            Weight::One => 0.0,
+            Weight::Right(e) | Weight::Left(e) => e,
+        };
+        // int from the anchor to t of w f, in the anchor's own orientation (u = 1 - t or 1 + t):
+        // ((u / 2)^(e + 1)) int_{-1}^{1} (1 - s)^e f(...) ds by Gauss-Jacobi, exact for degree < n
+        let (sj, wj) = gauss_jacobi(n / 2 + 2, e, 0.0);
+        let from_anchor = |coef: &[f64], t: f64| {
+            let u = if left { 1.0 + t } else { 1.0 - t };
+            let sum: f64 = sj
+                .iter()
+                .zip(&wj)
+                .map(|(&s, &w)| {
+                    let at = u * 0.5 * (1.0 - s);
+                    let x = if left { -1.0 + at } else { 1.0 - at };
+                    w * legendre_sum(coef, x)
+                })
+                .sum();
+            (0.5 * u).powf(e + 1.0) * sum
+        };
+        // r: the polynomial antiderivative / w at n + 1 Gauss-Legendre nodes (exact: degree n)
+        let (nodes, weights) = gauss_legendre(n + 1);
+        let fit = |coef: &[f64]| {
+            let mut r = vec![0.0; n + 1];
+            let mut leg = vec![0.0; n + 1];
+            for (&t, &w) in nodes.iter().zip(&weights) {
+                let u = if left { 1.0 + t } else { 1.0 - t };
+                let v = w * from_anchor(coef, t) / u.powf(e);
+                legendre(t, &mut leg);
+                r.iter_mut().zip(&leg).for_each(|(r, l)| *r += v * l);
+            }
+            r.iter_mut()
+                .enumerate()
+                .for_each(|(k, r)| *r *= k as f64 + 0.5);
+            r
+        };
+        let (rp, rq) = (fit(&f.p), fit(&f.q));
+        let moments = f.weight.moments(n + 1);
+        let mass = |coef: &[f64]| coef.iter().zip(&moments).map(|(c, m)| c * m).sum::<f64>();
+        // int w R: the rule for w applied to (r series) / u, exact for degree < n
+        let end = |r: &[f64]| {
+            let (tj, wj) = f.weight.rule(n / 2 + 2);
+            tj.iter()
+                .zip(&wj)
+                .map(|(&t, &w)| {
+                    let u = if left { 1.0 + t } else { 1.0 - t };
+                    w * legendre_sum(r, t) / u
+                })
+                .sum::<f64>()
+        };
+        Antiderivative {
+            weight: f.weight,
+            left,
+            mass: (mass(&f.p), mass(&f.q)),
+            end: (end(&rp), end(&rq)),
+            rp,
+            rq,
+            moments,
+        }
+    }
+
+    /// int_t^1 of the p series times w (on the axis, -1 <= t <= 1).
+    fn p_from(&self, t: f64, omt: f64, opt: f64) -> f64 {
+        let v = self.weight.at(omt, opt) * legendre_sum(&self.rp, t);
+        if self.left { self.mass.0 - v } else { v }
+    }
+
+    /// Re Lambda_q(zeta) on the axis (l from below), `c` scratch of the degree of r.
+    fn log_q(&self, l: Local, c: &mut [C64]) -> f64 {
+        let to_anchor = if self.left { l.opz } else { l.omz };
+        if to_anchor.re == 0.0 && to_anchor.im.abs() == AT_END {
+            return self.mass.1 * std::f64::consts::LN_2 - self.end.1;
+        }
+        let n = self.moments.len();
+        near_transforms(self.weight, &self.moments, l, &mut c[..n], None);
+        let transform: f64 = self.rq.iter().zip(c.iter()).map(|(r, c)| r * c.re).sum();
+        if self.left {
+            self.mass.1 * l.omz.norm().ln() + transform
+        } else {
+            self.mass.1 * l.opz.norm().ln() - transform
+        }
+    }
+}
+
+/// A panel ready for transforms.
+#[derive(Clone, Debug)]
+struct KernelPanel {
+    a: f64,
+    b: f64,
+    m: f64,
+    h: f64,
+    near: Vec<NearFamily>,
+    anti: Vec<Antiderivative>,
+    far: Vec<FarRule>,
+}
+
+/// The sums G_p, G_q (and G_p', G_q' when asked for) at one point.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Transforms {
+    pub(crate) p: C64,
+    pub(crate) q: C64,
+    pub(crate) dp: C64,
+    pub(crate) dq: C64,
+}
+
+impl Transforms {
+    fn zero() -> Self {
+        let z = C64::new(0.0, 0.0);
+        Transforms {
+            p: z,
+            q: z,
+            dp: z,
+            dq: z,
+        }
+    }
+}
+
+/// A point z = x + w of the plane given as a point x of the axis and a small offset w, so
+/// that its distance to a panel end keeps its relative accuracy: (b - x) - w, where x + w
+/// rounded would lose it (kappa < 1 puts z at x -+ delta sqrt((1 - kappa) / 2) y, beside an
+/// end when x is at it).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Point {
+    pub(crate) x: f64,
+    pub(crate) w: C64,
+}
+
+impl Point {
+    /// x + w.
+    fn z(self) -> C64 {
+        self.w + self.x
+    }
+
+    /// -z.
+    fn neg(self) -> Point {
+        Point {
+            x: -self.x,
+            w: -self.w,
+        }
+    }
+}
+
+/// The expansion's panels prepared for transforms at any point.
+#[derive(Clone, Debug)]
+pub(crate) struct Kernel {
+    panels: Vec<KernelPanel>,
+    /// M_(2j) of p and M_(2j+1) of q, j < MOMENTS / 2.
+    even_p: Vec<f64>,
+    odd_q: Vec<f64>,
+}
+
+/// Gauss rules shared between the panels while building (keyed by weight and size).
+type Rules = HashMap<(u64, u64, usize), (Vec<f64>, Vec<f64>)>;
+
+fn rule(rules: &mut Rules, weight: Weight, m: usize) -> &(Vec<f64>, Vec<f64>) {
+    let (a, b) = weight.exponents();
+    rules
+        .entry((a.to_bits(), b.to_bits(), m))
+        .or_insert_with(|| weight.rule(m))
+}
+
+impl KernelPanel {
+    fn new(a: f64, b: f64, families: &[Family], rules: &mut Rules) -> Self {
+        let (m, h) = (0.5 * (a + b), 0.5 * (b - a));
+        let near: Vec<NearFamily> = families
+            .iter()
+            .map(|f| {
+                let n = f.p.len().max(f.q.len()).max(1);
+                NearFamily {
+                    weight: f.weight,
+                    p: f.p.clone(),
+                    q: f.q.clone(),
+                    moments: f.weight.moments(n),
+                }
+            })
+            .collect();
+        let far = BANDS
+            .iter()
+            .map(|&rho| {
+                let mut r = FarRule::default();
+                for f in &near {
+                    let n = f.moments.len();
+                    let (nodes, weights) = rule(rules, f.weight, band_nodes(rho, n));
+                    let mut leg = vec![0.0; n];
+                    for (&t, &w) in nodes.iter().zip(weights) {
+                        legendre(t, &mut leg);
+                        let sum = |c: &[f64]| c.iter().zip(&leg).map(|(c, l)| c * l).sum::<f64>();
+                        let x = m + h * t;
+                        let (wp, wq) = (h * w * sum(&f.p), h * w * sum(&f.q));
+                        r.x.push(x);
+                        r.wp.push(wp);
+                        r.wq.push(wq);
+                        r.wqx.push(wq * x);
+                    }
+                }
+                r
+            })
+            .collect();
+        let anti = near
+            .iter()
+            .map(|f| Antiderivative::new(f, f.moments.len()))
+            .collect();
+        KernelPanel {
+            a,
+            b,
+            m,
+            h,
+            near,
+            anti,
+            far,
+        }
+    }
+
+    /// int_x^b p over this panel for a <= x <= b.
+    fn p_from(&self, x: f64) -> f64 {
+        let (omt, opt) = ((self.b - x) / self.h, (x - self.a) / self.h);
+        let t = ((x - self.m) / self.h).clamp(-1.0, 1.0);
+        self.h * self.anti.iter().map(|f| f.p_from(t, omt, opt)).sum::<f64>()
+    }
+
+    /// int over this panel of q(s) ln|x - s| ds for real x.
+    fn log_q(&self, x: f64, scratch: &mut [C64]) -> f64 {
+        let z = Point {
+            x,
+            w: C64::new(0.0, -0.0),
+        };
+        match KernelPanel::band(self.rho(z.z())) {
+            Some(b) => {
+                let r = &self.far[b];
+                r.x.iter()
+                    .zip(&r.wq)
+                    .map(|(&s, &w)| w * (x - s).abs().ln())
+                    .sum()
+            }
+            None => {
+                let l = self.local(z);
+                let (mass, own): (f64, f64) = self.anti.iter().fold((0.0, 0.0), |(m, v), f| {
+                    (m + f.mass.1, v + f.log_q(l, scratch))
+                });
+                self.h * (mass * self.h.ln() + own)
+            }
+        }
+    }
+
+    /// Bernstein parameter of z for this panel (distances by sqrt, not the slower hypot of
+    /// `norm`: z is never near overflow here).
+    fn rho(&self, z: C64) -> f64 {
+        let dist = |e: f64| ((z.re - e) * (z.re - e) + z.im * z.im).sqrt();
+        let s = (dist(self.a) + dist(self.b)) / (2.0 * self.h);
+        s + (s * s - 1.0).max(0.0).sqrt()
+    }
+
+    /// The far band of rho (None: near field).
+    fn band(rho: f64) -> Option<usize> {
+        BANDS.iter().rposition(|&lo| rho >= lo)
+    }
+
+    /// The local point of z, the distances to the ends from the physical ones, (b - x) - w
+    /// and (x - a) + w, formed part by part so that they keep their accuracy next to an end
+    /// and the sign of a zero imaginary part (a point of the axis exactly at an end is moved
+    /// [`AT_END`] off it, to that side).
+    fn local(&self, z: Point) -> Local {
+        let Point { x, w } = z;
+        let mut omz = C64::new((self.b - x) - w.re, -w.im) / self.h;
+        let mut opz = C64::new((x - self.a) + w.re, w.im) / self.h;
+        let off = AT_END.copysign(w.im);
+        if omz.re == 0.0 && omz.im == 0.0 {
+            omz.im = -off;
+        }
+        if opz.re == 0.0 && opz.im == 0.0 {
+            opz.im = off;
+        }
+        Local {
+            zeta: C64::new((x - self.m) + w.re, w.im) / self.h,
+            omz,
+            opz,
+        }
+    }
+
+    /// This panel's own g_p(z), g_q(z) (times pi) and their z-derivatives when `deriv`, in
+    /// closed form; `scratch` holds two vectors of the largest degree.
+    fn near_sums(
+        &self,
+        z: Point,
+        deriv: bool,
+        scratch: &mut [[C64; MAX_DEGREE + 1]; 2],
+    ) -> Transforms {
+        let l = self.local(z);
+        let mut t = Transforms::zero();
+        let [c, d] = scratch;
+        for f in &self.near {
+            let n = f.moments.len();
+            near_transforms(
+                f.weight,
+                &f.moments,
+                l,
+                &mut c[..n],
+                deriv.then_some(&mut d[..n]),
+            );
+            let dot = |coef: &[f64], v: &[C64]| {
+                coef.iter()
+                    .zip(v)
+                    .fold(C64::new(0.0, 0.0), |s, (a, b)| s + b * a)
+            };
+            t.p += dot(&f.p, c);
+            t.q += dot(&f.q, c);
+            if deriv {
+                t.dp += dot(&f.p, d) / self.h;
+                t.dq += dot(&f.q, d) / self.h;
+            }
+        }
+        t
+    }
+
+    /// g_p(z), g_q(z) (times pi) of this panel alone by its far rule of band `band`.
+    fn far_sums(&self, z: C64, band: usize, deriv: bool) -> Transforms {
+        let r = &self.far[band];
+        let mut t = Transforms::zero();
+        for ((&x, &wp), &wq) in r.x.iter().zip(&r.wp).zip(&r.wq) {
+            let inv = (z - x).inv();
+            t.p += inv * wp;
+            t.q += inv * wq;
+            if deriv {
+                let inv2 = inv * inv;
+                t.dp -= inv2 * wp;
+                t.dq -= inv2 * wq;
+            }
+        }
+        t
+    }
+
+    /// This panel and its mirror by one far rule (Re z >= 0, the mirror farther):
+    /// pi (g_p(z) - g_p(-z)) = 2z sum wp / ((z - x)(z + x)),
+    /// pi (g_q(z) + g_q(-z)) = 2 sum wq x / ((z - x)(z + x)).
+    fn far_pair(&self, z: C64, band: usize, deriv: bool, t: &mut Transforms) {
+        let r = &self.far[band];
+        let (mut sp, mut sq) = (C64::new(0.0, 0.0), C64::new(0.0, 0.0));
+        let (mut sp2, mut sq2) = (sp, sq);
+        for ((&x, &wp), &wqx) in r.x.iter().zip(&r.wp).zip(&r.wqx) {
+            let inv = ((z - x) * (z + x)).inv();
+            sp += inv * wp;
+            sq += inv * wqx;
+            if deriv {
+                let inv2 = inv * inv;
+                sp2 += inv2 * wp;
+                sq2 += inv2 * wqx;
+            }
+        }
+        t.p += z * sp * 2.0;
+        t.q += sq * 2.0;
+        if deriv {
+            // d/dz 2z/(z^2 - x^2) = 2/(z^2 - x^2) - 4 z^2/(z^2 - x^2)^2; 2x/(...) gives -4xz/(...)^2
+            t.dp += sp * 2.0 - z * z * sp2 * 4.0;
+            t.dq -= z * sq2 * 4.0;
+        }
+    }
+}
+
+impl Kernel {
+    /// Prepares an expansion's panels.
+    pub(crate) fn new(e: &Expansion) -> Self {
+        let mut rules = Rules::new();
+        let panels: Vec<KernelPanel> = e
+            .panels
+            .iter()
+            .map(|p| KernelPanel::new(p.a, p.b, &p.families, &mut rules))
+            .collect();
+        // the moments, from each family's rule exact for degree n + MOMENTS, doubled for the
+        // mirror half
+        let (mut even_p, mut odd_q) = (vec![0.0; MOMENTS / 2], vec![0.0; MOMENTS / 2]);
+        for (panel, source) in panels.iter().zip(&e.panels) {
+            for f in &source.families {
+                let n = f.p.len().max(f.q.len());
+                let (nodes, weights) = rule(&mut rules, f.weight, (n + MOMENTS) / 2 + 1);
+                for (&t, &w) in nodes.iter().zip(weights) {
+                    let x = panel.m + panel.h * t;
+                    let mut leg = vec![0.0; n];
+                    legendre(t, &mut leg);
+                    let val = |c: &[f64]| c.iter().zip(&leg).map(|(c, l)| c * l).sum::<f64>();
+                    let (vp, vq) = (2.0 * panel.h * w * val(&f.p), 2.0 * panel.h * w * val(&f.q));
+                    let mut power = 1.0;
+                    for j in 0..MOMENTS / 2 {
+                        even_p[j] += vp * power;
+                        odd_q[j] += vq * power * x;
+                        power *= x * x;
+                    }
+                }
+            }
+        }
+        Kernel {
+            panels,
+            even_p,
+            odd_q,
+        }
+    }
+
+    /// The moment series at |z| >= FAR_RADIUS (times pi), with as many terms as |z| needs.
+    fn far_field(&self, z: C64, deriv: bool) -> Transforms {
+        let terms = ((32.0 / z.norm_sqr().log10()) / 2.0).ceil() as usize + 1;
+        let terms = terms.min(MOMENTS / 2);
+        let inv = z.inv();
+        let w = inv * inv;
+        let (mut sp, mut sq) = (C64::new(0.0, 0.0), C64::new(0.0, 0.0));
+        let (mut dp, mut dq) = (sp, sq);
+        for j in (0..terms).rev() {
+            sp = sp * w + self.even_p[j];
+            sq = sq * w + self.odd_q[j];
+            if deriv {
+                dp = dp * w + self.even_p[j] * (2 * j + 1) as f64;
+                dq = dq * w + self.odd_q[j] * (2 * j + 2) as f64;
+            }
+        }
+        Transforms {
+            p: sp * inv,
+            q: sq * w,
+            dp: -dp * w,
+            dq: -dq * w * inv,
+        }
+    }
+
+    /// int_x^1 p for 0 <= x <= 1.
+    pub(crate) fn p_from(&self, x: f64) -> f64 {
+        self.panels
+            .iter()
+            .filter(|p| p.b > x)
+            .map(|p| {
+                if p.a >= x {
+                    p.h * p.anti.iter().map(|f| f.mass.0).sum::<f64>()
+                } else {
+                    p.p_from(x)
+                }
+            })
+            .sum()
+    }
+
+    /// L_q(x) = int_{-1}^{1} q(s) ln|x - s| ds for real x (q odd: each panel minus its
+    /// value at -x).
+    pub(crate) fn log_potential_q(&self, x: f64) -> f64 {
+        let mut scratch = [C64::new(0.0, 0.0); MAX_DEGREE + 1];
+        self.panels
+            .iter()
+            .map(|p| p.log_q(x, &mut scratch) - p.log_q(-x, &mut scratch))
+            .sum()
+    }
+
+    /// G_p(z), G_q(z) and, when `deriv`, G_p'(z), G_q'(z), for z off the segment [-1, 1] or
+    /// on it (the limit from below when Im z = -0.0).
+    pub(crate) fn transforms(&self, z: Point, deriv: bool) -> Transforms {
+        if z.z().re < 0.0 {
+            // G_p odd, G_q even (so G_p' even, G_q' odd)
+            let t = self.transforms(z.neg(), deriv);
+            return Transforms {
+                p: -t.p,
+                q: t.q,
+                dp: t.dp,
+                dq: -t.dq,
+            };
+        }
+        let mut t = if z.z().norm_sqr() >= FAR_RADIUS * FAR_RADIUS {
+            self.far_field(z.z(), deriv)
+        } else {
+            self.panel_sums(z, deriv)
+        };
+        let s = 1.0 / PI;
+        t.p *= s;
+        t.q *= s;
+        t.dp *= s;
+        t.dq *= s;
+        t
+    }
+
+    /// Sum over the panels and their mirrors (times pi), Re z >= 0.
+    fn panel_sums(&self, point: Point, deriv: bool) -> Transforms {
+        let zero = C64::new(0.0, 0.0);
+        // scratch for the near field, filled only when a panel is near
+        let mut scratch = None;
+        let mut t = Transforms::zero();
+        let z = point.z();
+        for panel in &self.panels {
+            match KernelPanel::band(panel.rho(z)) {
+                Some(b) => panel.far_pair(z, b, deriv, &mut t),
+                None => {
+                    let scratch =
+                        scratch.get_or_insert([[zero; MAX_DEGREE + 1], [zero; MAX_DEGREE + 1]]);
+                    let own = panel.near_sums(point, deriv, scratch);
+                    let mirror = match KernelPanel::band(panel.rho(-z)) {
+                        Some(b) => panel.far_sums(-z, b, deriv),
+                        None => panel.near_sums(point.neg(), deriv, scratch),
+                    };
+                    // g_p(z) - g_p(-z), g_q(z) + g_q(-z); derivatives in z
+                    t.p += own.p - mirror.p;
+                    t.q += own.q + mirror.q;
+                    t.dp += own.dp + mirror.dp;
+                    t.dq += own.dq - mirror.dq;
+                }
+            }
+        }
+        t
+    }
+}

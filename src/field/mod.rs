@@ -1,0 +1,180 @@
+//! The stress field of the orthotropic half-plane y < 0 under the contact tractions, the
+//! punch-edge intensity and the slip: what engineers compute from the contact (issue 10).
+//! Built once per solution from the method's [`Expansion`] of its own tractions, so it serves
+//! every method alike.
+//!
+//! # Field solution (Lekhnistskii)
+//! With the characteristic roots mu_k = i beta_k (THEORY.md section 2: beta1 beta2 = delta^2,
+//! beta1 + beta2 = delta sqrt(2 (1 + kappa)), Re beta_k > 0), the stresses are
+//! sxx = 2 Re sum mu_k^2 F_k(z_k), syy = 2 Re sum F_k(z_k), sxy = -2 Re sum mu_k F_k(z_k) with
+//! z_k = x + mu_k y in the lower half-plane. Writing F_k = (i/2) (a_k G_p + b_k G_q) with the
+//! Cauchy transforms G_f(z) = (1/pi) int f(t) / (z - t) dt (analytic for y < 0; at the surface
+//! G_f(x - i0) = H[f](x) + i f(x)), the surface conditions syy = -p, sxy = q fix
+//! a_1 + a_2 = 1, mu_1 a_1 + mu_2 a_2 = 0, b_1 + b_2 = 0, mu_1 b_1 + mu_2 b_2 = 1. In terms of
+//! h_f(beta) = G_f(x + i beta y), their means m_f = (h_f(beta1) + h_f(beta2)) / 2 and divided
+//! differences d_f = (h_f(beta1) - h_f(beta2)) / (beta1 - beta2), with b = (beta1 + beta2) / 2:
+//!   syy = -Im[m_p - b d_p - i d_q],
+//!   sxy = -Re[delta^2 d_p + i (m_q + b d_q)],
+//!   sxx = -Im[delta^2 (m_p + b d_p) + i (delta^2 kappa d_q + 2 b m_q)]
+//! (in units of P/a, x and y in units of a). Nothing divides by beta1 - beta2: at the double
+//! root (kappa = 1, and within [`DOUBLE_ROOT`] of it) m_f = h_f(b) and d_f = h_f'(b) =
+//! i y G_f'(x + i b y) (the error of that limit, ~(kappa - 1) h'', balances the rounding of
+//! the divided difference, ~eps h / (beta1 - beta2), near |kappa - 1| ~ 1e-10). Isotropic
+//! (delta = kappa = 1) these are Flamant's kernels integrated over p and q.
+//!
+//! # The surface and the edge
+//! At y = 0, d_f = 0 and m_f = H[f] + i f: syy = -p, sxy = q and
+//!   sxx(x, 0) = -delta^2 p(x) - delta sqrt(2 (1 + kappa)) H[q](x).
+//! Near the punch edge p ~ k (1 - x)^(-g) and q ~ mu p (slip), and H[(1 - t)^(-g)] ~
+//! cot(pi g) (1 - x)^(-g), so sxx(x, 0) ~ -k [delta^2 + delta sqrt(2 (1 + kappa)) mu cot(pi g)]
+//! (1 - x)^(-g): the same exponent g as p, amplitude -k (delta^2 + (1 - nu) mu^2) when
+//! cot(pi g) = bp mu (SPENCE, COUPLED, LCP: g = 1/2 - arctan(bp mu) / pi, and
+//! delta sqrt(2 (1 + kappa)) bp = 1 - nu), -k delta^2 for GOODMAN (g = 1/2).
+//!
+//! # Slip
+//! The tangential surface displacement relative to the punch, per P/E (THEORY.md section 3,
+//! pi B E = sqrt(2 (1 + kappa)) / delta, pi B E bq = A E = 1 - nu):
+//!   u(x) = -(1 - nu) int_c^x p dt - (sqrt(2 (1 + kappa)) / delta) int_c^x H[q] dt, x > c,
+//! 0 on the stick zone, odd ([`slip`]).
+
+mod expansion;
+mod kernel;
+mod slip;
+
+pub(crate) use expansion::{Expand, Expansion, Exponents, Family, Panel, fit, sample};
+
+use crate::material::Effective;
+use crate::numerics::cauchy::C64;
+use kernel::{Kernel, Point};
+
+/// |kappa - 1| up to which the roots are taken as the double root.
+const DOUBLE_ROOT: f64 = 1e-10;
+
+/// The characteristic roots as the stress formulas use them.
+#[derive(Clone, Copy, Debug)]
+struct Roots {
+    /// b = (beta1 + beta2) / 2 = delta sqrt((1 + kappa) / 2) > 0.
+    mean: f64,
+    /// (beta1 - beta2) / 2: delta sqrt((kappa - 1) / 2) (imaginary for kappa < 1); None at
+    /// the double root.
+    half: Option<C64>,
+    /// delta^2 = beta1 beta2.
+    product: f64,
+    /// delta^2 kappa = (beta1^2 + beta2^2) / 2.
+    square_mean: f64,
+}
+
+impl Roots {
+    fn new(k: &Effective) -> Self {
+        let d = k.delta;
+        let diff = k.kappa - 1.0;
+        let half = (diff.abs() > DOUBLE_ROOT).then(|| {
+            let r = d * (0.5 * diff.abs()).sqrt();
+            if diff > 0.0 {
+                C64::new(r, 0.0)
+            } else {
+                C64::new(0.0, r)
+            }
+        });
+        Roots {
+            mean: d * (0.5 * (1.0 + k.kappa)).sqrt(),
+            half,
+            product: d * d,
+            square_mean: d * d * k.kappa,
+        }
+    }
+}
+
+/// The field of one solution (built lazily by [`crate::Solution`], shared by its threads).
+#[derive(Clone, Debug)]
+pub(crate) struct Field {
+    roots: Roots,
+    kernel: Kernel,
+    expansion: Expansion,
+    /// (k, g) of the expansion.
+    edge: (f64, f64),
+    slip: slip::Slip,
+}
+
+impl Field {
+    /// The field of the tractions `e` on the material `k`, with stick half-width c.
+    pub(crate) fn new(e: Expansion, k: &Effective, c: f64) -> Self {
+        let kernel = Kernel::new(&e);
+        let edge = e.edge_intensity().unwrap_or((0.0, 0.0));
+        let slip = slip::Slip::new(&kernel, k, c);
+        Field {
+            roots: Roots::new(k),
+            kernel,
+            expansion: e,
+            edge,
+            slip,
+        }
+    }
+
+    /// (k, g) of p ~ k (1 - |x|)^(-g) at the punch edges.
+    pub(crate) fn edge_intensity(&self) -> (f64, f64) {
+        self.edge
+    }
+
+    /// The slip u(x) per P/E (see the module documentation).
+    pub(crate) fn slip(&self, x: f64) -> f64 {
+        self.slip.at(x, &self.kernel)
+    }
+
+    /// (sxx, syy, sxy) per P/a at (x, y), y <= 0, both finite (y = 0: the limit from inside).
+    pub(crate) fn stresses(&self, x: f64, y: f64) -> [f64; 3] {
+        if y == 0.0 && x.abs() == 1.0 {
+            // the punch edge itself: p, |q| and -sxx are infinite (q = 0 without friction)
+            let (_, q) = self.expansion.tractions(0.5);
+            let sxy = if q == 0.0 {
+                0.0
+            } else {
+                f64::INFINITY.copysign(x)
+            };
+            return [f64::NEG_INFINITY, f64::NEG_INFINITY, sxy];
+        }
+        let r = &self.roots;
+        let zero = C64::new(0.0, 0.0);
+        let (mp, mq, dp, dq) = if y == 0.0 {
+            // the limit from inside: both points at x - i0, d_f = 0
+            let t = self.kernel.transforms(
+                Point {
+                    x,
+                    w: C64::new(0.0, -0.0),
+                },
+                false,
+            );
+            (t.p, t.q, zero, zero)
+        } else if let Some(half) = r.half {
+            // x + i beta y, the offset apart (see [`Point`])
+            let point = |beta: C64| Point {
+                x,
+                w: C64::new(-(beta.im * y), beta.re * y),
+            };
+            let mean = C64::new(r.mean, 0.0);
+            let t1 = self.kernel.transforms(point(mean + half), false);
+            let t2 = self.kernel.transforms(point(mean - half), false);
+            let inv = (half * 2.0).inv();
+            (
+                (t1.p + t2.p) * 0.5,
+                (t1.q + t2.q) * 0.5,
+                (t1.p - t2.p) * inv,
+                (t1.q - t2.q) * inv,
+            )
+        } else {
+            let point = Point {
+                x,
+                w: C64::new(0.0, r.mean * y),
+            };
+            let t = self.kernel.transforms(point, true);
+            let iy = C64::new(0.0, y);
+            (t.p, t.q, iy * t.dp, iy * t.dq)
+        };
+        let i = C64::new(0.0, 1.0);
+        let b = r.mean;
+        let syy = -(mp - dp * b - i * dq).im;
+        let sxy = -(dp * r.product + i * (mq + dq * b)).re;
+        let sxx = -((mp + dp * b) * r.product + i * (dq * r.square_mean + mq * (2.0 * b))).im;
+        [sxx, syy, sxy]
+    }
+}
