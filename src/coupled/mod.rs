@@ -40,7 +40,7 @@ mod tests;
 use crate::error::{Error, Result};
 use crate::numerics::quadrature::gauss_legendre_nodes;
 use crate::numerics::roots::brent;
-use crate::problem::{Coupling, Profile, StickEdge, validate_tolerance};
+use crate::problem::{Coupling, Profile, StickEdge, traction_parts, validate_tolerance};
 use mesh::{Layout, Pt};
 use system::{Constants, Discrete, Families, solve_fixed};
 
@@ -94,6 +94,9 @@ pub struct CoupledSolution {
     coupling: Coupling,
     edge: StickEdge,
     error: f64,
+    /// Estimate of the traction error: [`ORDER_SAFETY`] times the distance between the
+    /// tractions of the last two orders ([`crate::problem::traction_distance`]).
+    traction_error: f64,
     /// q = delta q~ (1 when bp = 0).
     delta: f64,
     /// None for mu = 0 (p = p0, q = 0 exactly).
@@ -125,6 +128,10 @@ impl Profile for CoupledSolution {
 
     fn numerical_error(&self) -> f64 {
         self.error
+    }
+
+    fn traction_error(&self) -> f64 {
+        self.traction_error
     }
 
     /// (p, q) at 0 <= x < 1: one panel lookup and two short Legendre sums.
@@ -447,6 +454,7 @@ pub fn solve(k: &Coupling, tol: f64) -> Result<CoupledSolution> {
                 one_minus_c: 1.0,
             },
             error: 0.0,
+            traction_error: 0.0,
             delta: 1.0,
             discrete: None,
             order: 0,
@@ -514,10 +522,16 @@ pub fn solve(k: &Coupling, tol: f64) -> Result<CoupledSolution> {
             } else {
                 StickEdge::from_one_minus_c(w)
             };
+            let (dp, dq) = traction_parts(
+                |x| d.eval(Pt { x, u: 1.0 - x }),
+                |x| prev.eval(Pt { x, u: 1.0 - x }),
+                [c, prev.mesh.c],
+            );
             return Ok(CoupledSolution {
                 coupling: *k,
                 edge,
                 error: diff,
+                traction_error: ORDER_SAFETY * (dp + delta * dq),
                 delta,
                 discrete: Some(d),
                 order: n,
