@@ -224,6 +224,22 @@ orthoslip_status orthoslip_contact_set_tolerance(orthoslip_contact *k, double to
 orthoslip_status orthoslip_contact_solve(const orthoslip_contact *k, orthoslip_solution **out);
 
 /**
+ * Sets the traction tolerance: the target for the traction error of
+ * `orthoslip_solution_traction_error_estimate` (tol > 0; INFINITY means "tractions not
+ * needed": only the tolerance on c counts). Until this is called, the traction tolerance
+ * follows `orthoslip_contact_set_tolerance`. ORTHOSLIP_METHOD_AUTO picks the cheapest method
+ * meeting both tolerances; COUPLED and LCP refine until both are met; GOODMAN and SPENCE
+ * ignore it.
+ *
+ * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER or ORTHOSLIP_ERROR_INVALID_ARGUMENT
+ * (tol NaN, zero or negative; the contact is then unchanged).
+ *
+ * # Safety
+ * `k` must be NULL or a live contact not used by another thread during the call.
+ */
+orthoslip_status orthoslip_contact_set_traction_tolerance(orthoslip_contact *k, double tol);
+
+/**
  * Creates a material from plane-stress engineering constants (paper eq. (2), with
  * E = sqrt(E11 E22)): Young's moduli e11 (along x, the surface) and e22 (along y, the
  * depth), in-plane shear modulus g12 (any consistent stress unit, all > 0) and Poisson's
@@ -398,6 +414,25 @@ orthoslip_status orthoslip_solution_method(const orthoslip_solution *s, orthosli
  * `s` must be NULL or a live solution; `c_error` NULL or valid for one write.
  */
 orthoslip_status orthoslip_solution_error_estimate(const orthoslip_solution *s, double *c_error);
+
+/**
+ * Writes the solution's estimate of its traction error
+ * e_t = int_{-1}^{1} (|p(x) - p_exact(x)| + |q(x) - q_exact(x)|) dx, in units of the normal
+ * load P (p and q per P/a, int p dx = 1). No weight is needed: the punch-edge singularities
+ * p, |q| ~ (1 - |x|)^(-g), g <= 1/2, are integrable. An integral norm, because a stick edge
+ * off by dc moves the shear traction's step at x = c: a pointwise norm would see O(dc^g)
+ * there, this one O(mu p(c) dc).
+ * COUPLED: from its last two orders; LCP: from its last two grids; GOODMAN and SPENCE: an
+ * empirical model-error bound (a table measured offline against COUPLED, validated off its
+ * grid, not certified), +INFINITY where the table gives no bound. Never NaN.
+ *
+ * Returns ORTHOSLIP_OK or ORTHOSLIP_ERROR_NULL_POINTER (nothing written).
+ *
+ * # Safety
+ * `s` must be NULL or a live solution; `err` NULL or valid for one write.
+ */
+orthoslip_status orthoslip_solution_traction_error_estimate(const orthoslip_solution *s,
+                                                            double *err);
 
 #ifdef __cplusplus
 }  // extern "C"

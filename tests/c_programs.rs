@@ -221,3 +221,8 @@ fn spence_residuals() {
 fn coupled_residuals() {
     check_program("coupled_residuals");
 }
+
+#[test]
+fn traction_tolerance() {
+    check_program("traction_tolerance");
+}
