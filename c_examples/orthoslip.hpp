@@ -72,6 +72,10 @@ class solution {
     /// 1 - c with full relative accuracy.
     double slip_width() const { return get(orthoslip_solution_slip_width); }
     double error_estimate() const { return get(orthoslip_solution_error_estimate); }
+    /// Estimate of int (|dp| + |dq|) dx over the punch, in units of the load P.
+    double traction_error_estimate() const {
+        return get(orthoslip_solution_traction_error_estimate);
+    }
     orthoslip_method method() const {
         orthoslip_method used;
         check(orthoslip_solution_method(h_.get(), &used));
@@ -178,6 +182,11 @@ class contact {
     }
     contact &tolerance(double tol) {
         check(orthoslip_contact_set_tolerance(h_.get(), tol));
+        return *this;
+    }
+    /// INFINITY: tractions not needed (default: follows `tolerance`).
+    contact &traction_tolerance(double tol) {
+        check(orthoslip_contact_set_traction_tolerance(h_.get(), tol));
         return *this;
     }
     solution solve() const {

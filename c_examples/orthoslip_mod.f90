@@ -32,7 +32,8 @@ module orthoslip_mod
        orthoslip_solution_slip_width, orthoslip_solution_tractions, orthoslip_solution_method, &
        orthoslip_solution_error_estimate, orthoslip_last_error_message, &
        orthoslip_status_string, orthoslip_version, orthoslip_solution_stresses, &
-       orthoslip_solution_edge_intensity, orthoslip_solution_slip
+       orthoslip_solution_edge_intensity, orthoslip_solution_slip, &
+       orthoslip_solution_traction_error_estimate, orthoslip_contact_set_traction_tolerance
   public :: last_error_message, status_name, version
 
   interface
@@ -168,6 +169,23 @@ module orthoslip_mod
       import :: c_int, c_double, c_ptr
       type(c_ptr), value :: s
       real(c_double), intent(out) :: c_error
+      integer(c_int) :: status
+    end function
+
+    function orthoslip_solution_traction_error_estimate(s, err) &
+         bind(c, name="orthoslip_solution_traction_error_estimate") result(status)
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: s
+      real(c_double), intent(out) :: err
+      integer(c_int) :: status
+    end function
+
+    ! tol = ieee_value(tol, ieee_positive_inf): tractions not needed.
+    function orthoslip_contact_set_traction_tolerance(k, tol) &
+         bind(c, name="orthoslip_contact_set_traction_tolerance") result(status)
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: k
+      real(c_double), value :: tol
       integer(c_int) :: status
     end function
 

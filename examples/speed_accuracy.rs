@@ -1,6 +1,7 @@
 //! Speed against accuracy: every method at every resolution it offers, on a fixed set of
 //! scenes, timed per solve and compared with a high-accuracy COUPLED solution computed in the
-//! same run (error in c, and max traction error on |x| <= 0.99).
+//! same run (error in c, and max traction error on |x| <= 0.99); AUTO at the default tolerance
+//! is timed too, its row named for the method it chose.
 //!
 //! Run: `cargo run --release --example speed_accuracy` (one core is enough; ~6 minutes;
 //! writes docs/speed_accuracy.csv, docs/speed_accuracy_medians.md and
@@ -12,13 +13,14 @@ mod support;
 use std::fmt::Write as _;
 use std::time::{Duration, Instant};
 
-use orthoslip::{Coupling, Material, Profile, coupled, goodman, lcp, spence};
+use orthoslip::{Contact, Coupling, Material, Profile, coupled, goodman, lcp, spence};
 use support::plot::{Scale, Series, chart};
 
 /// A scene: a name, a material and a friction coefficient.
 struct Scene {
     name: String,
     coupling: Coupling,
+    contact: Contact,
 }
 
 fn scenes() -> Vec<Scene> {
@@ -43,9 +45,12 @@ fn scenes() -> Vec<Scene> {
     let mut out = Vec::new();
     for (name, m) in materials {
         for mu in [0.1, 0.3, 1.0] {
+            let mut contact = Contact::new(m);
+            contact.set_friction(mu).unwrap();
             out.push(Scene {
                 name: format!("{name}, mu = {mu}"),
                 coupling: m.coupling(mu),
+                contact,
             });
         }
     }
@@ -138,6 +143,10 @@ fn measure(quick: bool) -> Result<Vec<Row>, Box<dyn std::error::Error>> {
                     traction_error: traction_error(s, &reference),
                 })
             };
+        if let Some((t, s)) = time_solve(|| scene.contact.solve()) {
+            let chosen = format!("default tol: {:?}", s.method()).to_uppercase();
+            record("AUTO", chosen, t, s.profile());
+        }
         if let Some((t, s)) = time_solve(|| goodman::solve(&k)) {
             record("GOODMAN", "-".into(), t, &s);
         }
@@ -185,7 +194,7 @@ fn write_csv(rows: &[Row]) -> std::io::Result<()> {
 
 /// Rows from a CSV written by [`write_csv`] (scene names are quoted and contain commas).
 fn read_csv(text: &str) -> Result<Vec<Row>, Box<dyn std::error::Error>> {
-    let methods = ["GOODMAN", "SPENCE", "COUPLED", "LCP"];
+    let methods = ["AUTO", "GOODMAN", "SPENCE", "COUPLED", "LCP"];
     let mut rows = Vec::new();
     for line in text.lines().skip(1) {
         let (scene, rest) = line[1..].split_once("\",").ok_or("bad CSV line")?;

@@ -194,12 +194,12 @@ orthoslip_status orthoslip_contact_set_friction(orthoslip_contact *k, double mu)
 orthoslip_status orthoslip_contact_set_method(orthoslip_contact *k, orthoslip_method method);
 
 /**
- * Sets the tolerance: the target for |c - c_exact| (finite, 0 < tol < 1; default 1e-8).
- * ORTHOSLIP_METHOD_AUTO picks the cheapest method whose error estimate meets it;
- * ORTHOSLIP_METHOD_COUPLED and ORTHOSLIP_METHOD_LCP refine until they meet it (COUPLED's
- * tractions are then accurate to about 100 tol relative, so tol = 1e-10 gives tractions to
- * 1e-8); the closed-form approximations (GOODMAN, SPENCE) ignore it and report their model
- * error in `orthoslip_solution_error_estimate`.
+ * Sets the tolerance: the target for |c - c_exact| (finite, 0 < tol < 1; default 1e-8) and,
+ * unless `orthoslip_contact_set_traction_tolerance` set it apart, for the traction error of
+ * `orthoslip_solution_traction_error_estimate`. ORTHOSLIP_METHOD_AUTO picks the cheapest
+ * method whose error estimates meet both; ORTHOSLIP_METHOD_COUPLED and ORTHOSLIP_METHOD_LCP
+ * refine until they meet both; the closed-form approximations (GOODMAN, SPENCE) ignore it
+ * and report their model errors in the two estimates.
  *
  * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER or ORTHOSLIP_ERROR_INVALID_ARGUMENT
  * (the contact is then unchanged).
@@ -222,6 +222,22 @@ orthoslip_status orthoslip_contact_set_tolerance(orthoslip_contact *k, double to
  * `k` must be NULL or a live contact; `out` NULL or valid for writing one pointer.
  */
 orthoslip_status orthoslip_contact_solve(const orthoslip_contact *k, orthoslip_solution **out);
+
+/**
+ * Sets the traction tolerance: the target for the traction error of
+ * `orthoslip_solution_traction_error_estimate` (tol > 0; INFINITY means "tractions not
+ * needed": only the tolerance on c counts). Until this is called, the traction tolerance
+ * follows `orthoslip_contact_set_tolerance`. ORTHOSLIP_METHOD_AUTO picks the cheapest method
+ * meeting both tolerances; COUPLED and LCP refine until both are met; GOODMAN and SPENCE
+ * ignore it.
+ *
+ * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER or ORTHOSLIP_ERROR_INVALID_ARGUMENT
+ * (tol NaN, zero or negative; the contact is then unchanged).
+ *
+ * # Safety
+ * `k` must be NULL or a live contact not used by another thread during the call.
+ */
+orthoslip_status orthoslip_contact_set_traction_tolerance(orthoslip_contact *k, double tol);
 
 /**
  * Creates a material from plane-stress engineering constants (paper eq. (2), with
@@ -398,6 +414,25 @@ orthoslip_status orthoslip_solution_method(const orthoslip_solution *s, orthosli
  * `s` must be NULL or a live solution; `c_error` NULL or valid for one write.
  */
 orthoslip_status orthoslip_solution_error_estimate(const orthoslip_solution *s, double *c_error);
+
+/**
+ * Writes the solution's estimate of its traction error
+ * e_t = int_{-1}^{1} (|p(x) - p_exact(x)| + |q(x) - q_exact(x)|) dx, in units of the normal
+ * load P (p and q per P/a, int p dx = 1). No weight is needed: the punch-edge singularities
+ * p, |q| ~ (1 - |x|)^(-g), g <= 1/2, are integrable. An integral norm, because a stick edge
+ * off by dc moves the shear traction's step at x = c: a pointwise norm would see O(dc^g)
+ * there, this one O(mu p(c) dc).
+ * COUPLED: from its last two orders; LCP: from its last two grids; GOODMAN and SPENCE: an
+ * empirical model-error bound (a table measured offline against COUPLED, validated off its
+ * grid, not certified), +INFINITY where the table gives no bound. Never NaN.
+ *
+ * Returns ORTHOSLIP_OK or ORTHOSLIP_ERROR_NULL_POINTER (nothing written).
+ *
+ * # Safety
+ * `s` must be NULL or a live solution; `err` NULL or valid for one write.
+ */
+orthoslip_status orthoslip_solution_traction_error_estimate(const orthoslip_solution *s,
+                                                            double *err);
 
 /**
  * Evaluates the stresses inside the solid at n points (x[i], y[i]) in units of the punch

@@ -40,8 +40,15 @@ impl Method {
     }
 }
 
-/// Default target for |c - c_exact|.
+/// Default target for |c - c_exact| (and, unless set apart, for the traction error).
 pub const DEFAULT_TOLERANCE: f64 = 1e-8;
+
+/// Smallest tolerance on c that COUPLED is re-run with to meet a traction tolerance.
+const TIGHTEST_COUPLED: f64 = 1e-12;
+
+/// COUPLED's traction estimate over its tolerance on c, at most (measured: up to 46 at
+/// tolerances 1e-4 .. 1e-8 on six scenes of the reduced plane, b* = 0.1 .. 0.7).
+const TRACTION_PER_C: f64 = 50.0;
 
 /// A scene: the material, the friction coefficient and how to solve it.
 #[derive(Clone, Debug)]
@@ -50,6 +57,8 @@ pub struct Contact {
     mu: f64,
     method: Method,
     tolerance: f64,
+    /// Target for the traction error; None: the same as `tolerance`.
+    traction_tolerance: Option<f64>,
 }
 
 impl Contact {
@@ -60,6 +69,7 @@ impl Contact {
             mu: 0.0,
             method: Method::Auto,
             tolerance: DEFAULT_TOLERANCE,
+            traction_tolerance: None,
         }
     }
 
@@ -79,7 +89,8 @@ impl Contact {
         self.method = method;
     }
 
-    /// Sets the target for |c - c_exact| (finite, 0 < tol < 1).
+    /// Sets the target for |c - c_exact| (finite, 0 < tol < 1), and for the traction error
+    /// unless [`Contact::set_traction_tolerance`] set that apart.
     pub fn set_tolerance(&mut self, tol: f64) -> Result<()> {
         validate_tolerance(tol)?;
         self.tolerance = tol;
@@ -99,44 +110,99 @@ impl Contact {
             Method::Auto => self.auto_choice(&k),
             m => m,
         };
-        let tol = self.tolerance;
+        let (tol, ttol) = (self.tolerance, self.traction_tolerance());
         let profile: Box<dyn Solved> = match method {
             Method::Goodman => Box::new(goodman::solve(&k)?),
             Method::Spence => Box::new(spence::solve(&k)?),
-            Method::Coupled | Method::Auto => Box::new(coupled::solve(&k, tol)?),
-            Method::Lcp => Box::new(lcp::solve_to_tolerance(&k, tol)?),
+            Method::Coupled | Method::Auto => Box::new(coupled_to(&k, tol, ttol)?),
+            Method::Lcp => Box::new(lcp::solve_to_tolerance(&k, tol, ttol)?),
         };
-        let model = match method {
-            Method::Goodman => model_bound(Approximation::Goodman, &k),
-            Method::Spence => model_bound(Approximation::Spence, &k),
-            _ => 0.0,
+        let (model, traction_model) = match method {
+            Method::Goodman => model_bounds(Approximation::Goodman, &k),
+            Method::Spence => model_bounds(Approximation::Spence, &k),
+            _ => (0.0, 0.0),
         };
-        let c_error = profile.numerical_error() + model;
         Ok(Solution {
             method,
+            c_error: profile.numerical_error() + model,
+            traction_error: profile.traction_error() + traction_model,
             profile,
-            c_error,
             material: self.material,
             field: OnceLock::new(),
         })
     }
 
-    /// AUTO's choice: Goodman if its empirical model-error bound (the table of
-    /// [`crate::model_error`]) is within the tolerance, else Spence if its is, else COUPLED.
+    /// AUTO's choice: Goodman if its empirical model-error bounds (the tables of
+    /// [`crate::model_error`]) on c and on the tractions are within the tolerances, else
+    /// Spence if its are, else COUPLED.
     pub fn auto_choice(&self, k: &Coupling) -> Method {
+        let ttol = self.traction_tolerance();
         [
             (Method::Goodman, Approximation::Goodman),
             (Method::Spence, Approximation::Spence),
         ]
         .into_iter()
-        .find(|&(_, a)| model_error::bound(a, k).is_some_and(|b| b <= self.tolerance))
+        .find(|&(_, a)| {
+            let (c, t) = model_bounds(a, k);
+            c <= self.tolerance && (ttol.is_infinite() || t <= ttol)
+        })
         .map_or(Method::Coupled, |(m, _)| m)
+    }
+
+    /// Sets the target for the traction error ([`crate::problem::traction_distance`]):
+    /// 0 < tol, +infinity when the tractions are not needed (then only c counts, for AUTO's
+    /// choice too). Until set, it follows [`Contact::set_tolerance`].
+    pub fn set_traction_tolerance(&mut self, tol: f64) -> Result<()> {
+        if tol.is_nan() || tol <= 0.0 {
+            return Err(Error::InvalidArgument(format!(
+                "traction tolerance {tol} must be > 0 (infinity: tractions not needed)"
+            )));
+        }
+        self.traction_tolerance = Some(tol);
+        Ok(())
+    }
+
+    /// The target for the traction error in force.
+    pub fn traction_tolerance(&self) -> f64 {
+        self.traction_tolerance.unwrap_or(self.tolerance)
     }
 }
 
-/// The empirical model-error bound of an approximation, +infinity where the table gives none.
-fn model_bound(a: Approximation, k: &Coupling) -> f64 {
-    model_error::bound(a, k).unwrap_or(f64::INFINITY)
+/// The empirical model-error bounds of an approximation on c and on the tractions,
+/// +infinity where the tables give none.
+fn model_bounds(a: Approximation, k: &Coupling) -> (f64, f64) {
+    let inf = |b: Option<f64>| b.unwrap_or(f64::INFINITY);
+    (
+        inf(model_error::bound(a, k)),
+        inf(model_error::traction_bound(a, k)),
+    )
+}
+
+/// COUPLED to `tol` in c and `traction_tol` in the tractions. Its stopping rule asks for c
+/// (and a relative traction agreement of about 100 tol), and its traction estimate came out
+/// at up to [`TRACTION_PER_C`] times its tolerance on c, so it
+/// is run to min(tol, traction_tol / TRACTION_PER_C); where its traction estimate still
+/// misses `traction_tol` it is re-run with the tolerance on c scaled down by the ratio missed
+/// (twice over), down to [`TIGHTEST_COUPLED`].
+fn coupled_to(k: &Coupling, tol: f64, traction_tol: f64) -> Result<coupled::CoupledSolution> {
+    let mut tol = tol.min((traction_tol / TRACTION_PER_C).max(TIGHTEST_COUPLED));
+    loop {
+        let s = coupled::solve(k, tol)?;
+        let e = s.traction_error();
+        if e <= traction_tol {
+            return Ok(s);
+        }
+        if tol <= TIGHTEST_COUPLED {
+            return Err(Error::ToleranceNotMet {
+                estimate: e,
+                tolerance: traction_tol,
+                detail: format!("coupled: traction error at tolerance {tol:.0e} in c"),
+            });
+        }
+        tol = (0.5 * tol * traction_tol / e)
+            .min(0.1 * tol)
+            .max(TIGHTEST_COUPLED);
+    }
 }
 
 /// A solved scene: the stick edge, the method used, its error estimate and the tractions.
@@ -145,6 +211,7 @@ pub struct Solution {
     method: Method,
     profile: Box<dyn Solved>,
     c_error: f64,
+    traction_error: f64,
     material: Material,
     /// The stress field, built on first use (then read-only: safe from many threads).
     field: OnceLock<Field>,
@@ -247,5 +314,19 @@ impl Solution {
             return Err(Error::InvalidArgument(format!("x = {x} is not finite")));
         }
         Ok(self.field().slip(x))
+    }
+
+    /// The method's own profile (stick edge, numerical error and tractions).
+    pub fn profile(&self) -> &dyn Profile {
+        self.profile.as_ref()
+    }
+
+    /// Estimate of the traction error, the norm of [`crate::problem::traction_distance`]
+    /// (int (|p - p_exact| + |q - q_exact|) dx over the punch, in units of the normal load):
+    /// from the last two orders for COUPLED, the last two grids for LCP, the empirical
+    /// model-error table of [`crate::model_error`] for GOODMAN and SPENCE (+infinity where it
+    /// gives no bound).
+    pub fn traction_error_estimate(&self) -> f64 {
+        self.traction_error
     }
 }

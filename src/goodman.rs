@@ -100,14 +100,24 @@ impl GoodmanSolution {
     /// J1 = PV int_0^c p0(t) / (sqrt(c^2 - t^2) (t^2 - x^2)) dt = RJ(0, 1 - c^2, 1, 1 - x^2) / (3 pi),
     /// J2 = int_c^1 p0(s) / (sqrt(s^2 - c^2) (s^2 - x^2)) ds
     ///    = [RF(0, c^2, 1) + n/3 RJ(0, c^2, 1, 1 - n)] / (pi (1 - x^2)), n = (1 - c^2) / (1 - x^2).
+    ///
+    /// When 1 - c^2 underflows (bq / mu below ~ pi / 745), J1 diverges like K(c) and the
+    /// stick-edge equation mu K(k') = bq K(c) cancels it against mu J2 exactly: with
+    /// RJ(0, k'^2, 1, 1 - x^2) = 3 (Pi(x^2, c) - K(c)) / x^2 and, as k' -> 0,
+    /// Pi(n, c) - K(c) = n K(c) / (1 - n) - sqrt(n) artanh(sqrt(n)) / (1 - n) + O(k'^2 ln k'),
+    /// the limit is q = (2 bq / pi^2) sqrt(c^2 - x^2) artanh(x) / (1 - x^2), exact to rounding
+    /// once k'^2 is below the smallest normal double.
     fn q_stick(&self, x: f64) -> f64 {
         let d2 = (self.edge.c - x) * (self.edge.c + x);
         let w = (1.0 - x) * (1.0 + x);
+        let k = &self.coupling;
+        if self.k2 < f64::MIN_POSITIVE {
+            return 2.0 * k.bq / (PI * PI) * d2.sqrt() * x.atanh() / w;
+        }
         let j1 = elliprj(0.0, self.k2, 1.0, w).unwrap_or(f64::NAN) / (3.0 * PI);
         let n = self.k2 / w;
         let j2 =
             (self.kk + n / 3.0 * elliprj(0.0, self.c2, 1.0, d2 / w).unwrap_or(f64::NAN)) / (PI * w);
-        let k = &self.coupling;
         2.0 * x / PI * d2.sqrt() * (k.mu * j2 - k.bq * j1)
     }
 }
@@ -254,6 +264,38 @@ mod tests {
             let x = c * i as f64 / 50.0;
             let (p, q) = s.tractions(x);
             assert!(q.abs() <= k.mu * p * (1.0 + 1e-12));
+        }
+    }
+
+    /// Where 1 - c underflows (bq / mu = 1e-3) q is the k' -> 0 limit of the full formula,
+    /// which it meets continuously: at bq / mu = 4.6e-3 (1 - c ~ 1e-296, still normal) the
+    /// full formula agrees with the limit to rounding of the cancelled logarithm.
+    #[test]
+    fn shear_stays_finite_when_the_slip_width_underflows() {
+        let at = |mu: f64| {
+            let s = solve(&Coupling {
+                bp: 0.2,
+                bq: 0.2,
+                mu,
+            })
+            .unwrap();
+            assert!(s.k2 >= 0.0 && s.edge().c <= 1.0);
+            s
+        };
+        let underflowed = at(200.0);
+        assert_eq!(underflowed.k2, 0.0);
+        let normal = at(0.2 / 4.6e-3);
+        assert!(normal.k2 > 0.0 && normal.k2 < 1e-290, "{}", normal.k2);
+        for x in [1e-3, 0.1, 0.5, 0.9, 0.999_999] {
+            let q = underflowed.tractions(x).1;
+            assert!(q.is_finite() && q > 0.0, "x = {x}: q = {q}");
+            let limit = 2.0 * 0.2 / (PI * PI) * x.atanh() / ((1.0 - x) * (1.0 + x)).sqrt();
+            assert!((q / limit - 1.0).abs() < 1e-14, "x = {x}");
+            let full = normal.tractions(x).1;
+            assert!(
+                (full / limit - 1.0).abs() < 1e-12,
+                "x = {x}: {full} vs {limit}"
+            );
         }
     }
 

@@ -10,6 +10,7 @@
 //! bp = bq = b* = sqrt(bp bq) and friction mu~ = mu / delta (THEORY.md section 4).
 
 use crate::error::{Error, Result};
+use crate::numerics::quadrature::graded_rule;
 
 /// The three numbers that fix the solution: coupling constants and friction coefficient.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -134,6 +135,20 @@ pub trait Profile: std::fmt::Debug + Send + Sync {
     /// (p(x), q(x)) for 0 <= x < 1.
     fn half_line_tractions(&self, x: f64) -> (f64, f64);
 
+    /// The method's own estimate of the traction error ([`traction_distance`] from the exact
+    /// tractions of the equations it solves). This default serves the closed forms: rounding,
+    /// plus the shift of the shear traction's stick-edge step by the error in c on both
+    /// sides, 2 (1 + mu p(c)) |dc|.
+    fn traction_error(&self) -> f64 {
+        let (k, e) = (self.coupling(), self.edge());
+        let p_c = if e.c < 1.0 {
+            self.half_line_tractions(e.c).0
+        } else {
+            0.0
+        };
+        2.0 * (1.0 + k.mu * p_c) * self.numerical_error() + 64.0 * f64::EPSILON * (1.0 + k.mu)
+    }
+
     /// Dimensionless tractions (p(x), q(x)) per P/a at any x (not NaN) in units of the punch
     /// half-width: p even and q odd (q(0) = 0), zero outside the punch, p = +infinity and
     /// q = +-infinity (0 when mu = 0) at the punch edges x = +-1 where p ~ (1 - |x|)^(-g).
@@ -161,6 +176,53 @@ pub trait Profile: std::fmt::Debug + Send + Sync {
         }
     }
 }
+
+/// The traction error norm of orthoslip: with (p, q) per P/a as reported (int p = 1),
+/// ||(dp, dq)|| = int_{-1}^{1} (|dp(x)| + |dq(x)|) dx, i.e. the error in units of the normal
+/// load P. It is finite although p and q are infinite at x = +-1 (every edge exponent is
+/// g <= 1/2, so the edge singularities are integrable, no weight needed), and a stick edge
+/// off by dc adds O(mu p(c) dc) to it; a pointwise norm would see the shear traction's
+/// (c - x)^g step there move by O(dc^g), which for g -> 0 (large friction) is O(1) however
+/// small dc is.
+///
+/// Evaluated on the half-line (p even, q odd) by a composite Gauss-Legendre rule split at
+/// both profiles' stick edges and graded towards them and towards x = 1 (down to 1e-15 of
+/// each piece; the neglected ends are below 1e-7 of the norm).
+pub fn traction_distance(a: &dyn Profile, b: &dyn Profile) -> f64 {
+    let (dp, dq) = traction_parts(
+        |x| a.half_line_tractions(x),
+        |x| b.half_line_tractions(x),
+        [a.edge().c, b.edge().c],
+    );
+    dp + dq
+}
+
+/// The two parts (int |dp|, int |dq|) over (-1, 1) of [`traction_distance`] for two
+/// half-line profiles with stick edges `edges`.
+pub fn traction_parts(
+    a: impl Fn(f64) -> (f64, f64),
+    b: impl Fn(f64) -> (f64, f64),
+    edges: [f64; 2],
+) -> (f64, f64) {
+    let mut cuts = vec![0.0, 1.0];
+    cuts.extend(edges.iter().copied().filter(|&c| c > 0.0 && c < 1.0));
+    cuts.sort_by(f64::total_cmp);
+    cuts.dedup();
+    let (mut dp, mut dq) = (0.0, 0.0);
+    for w in cuts.windows(2) {
+        for (x, wt) in graded_rule(w[0], w[1], GRADING, GRADED_DEPTH, GRADED_POINTS) {
+            let ((pa, qa), (pb, qb)) = (a(x), b(x));
+            dp += wt * (pa - pb).abs();
+            dq += wt * (qa - qb).abs();
+        }
+    }
+    (2.0 * dp, 2.0 * dq)
+}
+
+/// The rule of [`traction_parts`]: panel ratio, depth and Gauss points per panel.
+const GRADING: f64 = 0.15;
+const GRADED_DEPTH: f64 = 1e-15;
+const GRADED_POINTS: usize = 5;
 
 #[cfg(test)]
 mod tests {

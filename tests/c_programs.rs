@@ -236,3 +236,8 @@ fn field_slip() {
 fn field_errors() {
     check_program("field_errors");
 }
+
+#[test]
+fn traction_tolerance() {
+    check_program("traction_tolerance");
+}

@@ -9,9 +9,11 @@ mod generator;
 
 use generator::{round_up, sample};
 use orthoslip::model_error::{
-    Approximation, B_STAR, FLOOR, LOG10_MU, bound, tabulated, tabulated_beyond,
+    Approximation, B_STAR, FLOOR, LOG10_MU, TRACTION_FLOOR, bound, tabulated, tabulated_beyond,
+    tabulated_tractions, traction_bound,
 };
-use orthoslip::{Coupling, Profile, coupled, goodman, spence};
+use orthoslip::problem::traction_distance;
+use orthoslip::{Contact, Coupling, Material, Method, Profile, coupled, goodman, spence};
 
 /// Random points of the validation.
 const POINTS: usize = 200;
@@ -21,8 +23,13 @@ const REFERENCE_TOL: f64 = 1e-11;
 /// A fresh value against the committed one: equal after rounding up to two digits (to 10%
 /// of the value plus the reference's accuracy).
 fn assert_matches(what: &str, stored: f64, fresh: f64) {
+    let floor = if what.contains("tractions") {
+        TRACTION_FLOOR
+    } else {
+        FLOOR
+    };
     assert!(
-        (stored - round_up(fresh)).abs() <= 0.1 * fresh + 2.0 * FLOOR,
+        (stored - round_up(fresh)).abs() <= 0.1 * fresh + 2.0 * floor,
         "{what}: table {stored:e}, fresh {fresh:e} \
          (regenerate: cargo run --release --example model_error_table)"
     );
@@ -38,12 +45,20 @@ fn committed_table_matches_a_fresh_computation() {
     for (i, &b) in B_STAR.iter().enumerate() {
         for (j, &l) in LOG10_MU.iter().enumerate() {
             let at = format!("b* = {b}, log10 mu~ = {l}");
-            let stored =
-                [Approximation::Goodman, Approximation::Spence].map(|a| tabulated(a)[i][j]);
+            let [g, sp] = [Approximation::Goodman, Approximation::Spence];
+            let stored = [
+                tabulated(g)[i][j],
+                tabulated(sp)[i][j],
+                tabulated_tractions(g)[i][j],
+                tabulated_tractions(sp)[i][j],
+            ];
             match sample(b, 10f64.powf(l)) {
                 Ok(s) => {
                     assert_matches(&format!("Goodman at {at}"), stored[0], s.goodman);
                     assert_matches(&format!("Spence at {at}"), stored[1], s.spence);
+                    let t = (s.goodman_tractions, s.spence_tractions);
+                    assert_matches(&format!("Goodman's tractions at {at}"), stored[2], t.0);
+                    assert_matches(&format!("Spence's tractions at {at}"), stored[3], t.1);
                     if j == 0 {
                         assert_matches(&format!("largest c at {at}"), below[i], s.max_c);
                     }
@@ -119,4 +134,67 @@ fn empirical_bound_holds_off_the_grid() {
         );
     }
     assert!(compared.iter().all(|&c| c >= POINTS / 2), "{compared:?}");
+}
+
+/// The traction bound, like the bound on c, where the table knows nothing: at random
+/// (b*, mu~) over its rows and from mu~ = 1e-3 (below the first column, where the first
+/// column's values are used) to its last column, and in materials with delta != 1 (the bound
+/// scales with 1 + delta), through `Contact` (the solution's traction estimate) against
+/// COUPLED to 1e-11 (`problem::traction_distance`).
+#[test]
+fn empirical_traction_bound_holds_off_the_grid() {
+    let mut rng = fastrand::Rng::with_seed(20_261_123);
+    let span = |lo: f64, hi: f64, u: f64| lo + (hi - lo) * u;
+    let mut worst = [(0.0_f64, 0.0, 0.0, 0.0); 2];
+    let mut compared = [0usize; 2];
+    for i in 0..POINTS {
+        let b = span(B_STAR[0], B_STAR[B_STAR.len() - 1], rng.f64());
+        let mu_tilde = 10f64.powf(span(-3.0, LOG10_MU[LOG10_MU.len() - 1], rng.f64()));
+        // reduced scenes (delta = 1) and every third one with delta = 0.3 or 3 (E = 1,
+        // kappa = 1: b* = (1 - nu) / 2)
+        let delta = [1.0, 1.0, 0.3, 1.0, 1.0, 3.0][i % 6];
+        let m = Material::effective(1.0, 1.0 - 2.0 * b, delta, 1.0).unwrap();
+        let k = m.coupling(1.0);
+        let mu = mu_tilde * (k.bq / k.bp).sqrt();
+        let k = m.coupling(mu);
+        let Ok(exact) = coupled::solve(&k, REFERENCE_TOL) else {
+            continue;
+        };
+        for (n, method) in [Method::Goodman, Method::Spence].into_iter().enumerate() {
+            let mut contact = Contact::new(m);
+            contact.set_friction(mu).unwrap();
+            contact.set_method(method);
+            let s = contact.solve().unwrap();
+            let est = s.traction_error_estimate();
+            if est.is_infinite() {
+                continue;
+            }
+            let err = traction_distance(s.profile(), &exact);
+            assert!(
+                err <= est,
+                "{method:?} at b* = {b}, mu~ = {mu_tilde}, delta = {delta}: traction error \
+                 {err:e} above the estimate {est:e}"
+            );
+            compared[n] += 1;
+            if err / est > worst[n].0 {
+                worst[n] = (err / est, b, mu_tilde, delta);
+            }
+        }
+    }
+    for (n, name) in ["Goodman", "Spence"].iter().enumerate() {
+        let (r, b, mu, delta) = worst[n];
+        println!(
+            "{name}: traction bound held at {} random points; worst error / bound {r:.3} at \
+             b* = {b:.4}, mu~ = {mu:.4}, delta = {delta}",
+            compared[n]
+        );
+    }
+    assert!(compared.iter().all(|&c| c >= POINTS / 2), "{compared:?}");
+    // The bound exists exactly where the table says.
+    let k = Coupling {
+        bp: 0.2,
+        bq: 0.2,
+        mu: 1e3,
+    };
+    assert_eq!(traction_bound(Approximation::Goodman, &k), None);
 }

@@ -136,16 +136,25 @@ class Contact:
         mu: friction coefficient, finite and >= 0 (0 is the frictionless limit, c = 0).
         method: a :class:`Method` or its name; ``"auto"`` picks the cheapest method whose
             error estimate meets ``tol``.
-        tol: target for |c - c_exact| (0 < tol < 1); ``"coupled"`` and ``"lcp"`` refine
-            until they meet it, ``"goodman"`` and ``"spence"`` ignore it.
+        tol: target for |c - c_exact| (0 < tol < 1), and for the traction error unless
+            ``traction_tol`` is given; ``"coupled"`` and ``"lcp"`` refine until they meet
+            it, ``"goodman"`` and ``"spence"`` ignore it.
+        traction_tol: target for the traction error int (|dp| + |dq|) dx in units of the
+            load (> 0; ``math.inf``: tractions not needed); None follows ``tol``.
 
     Raises:
-        InvalidArgumentError: ``mu``, ``tol`` or an integer ``method`` is out of range.
+        InvalidArgumentError: ``mu``, ``tol``, ``traction_tol`` or an integer ``method`` is
+            out of range.
         ValueError: ``method`` is an unknown name.
     """
 
     def __init__(
-        self, material: Material, mu: float, method: MethodLike = "auto", tol: float = 1e-8
+        self,
+        material: Material,
+        mu: float,
+        method: MethodLike = "auto",
+        tol: float = 1e-8,
+        traction_tol: float | None = None,
     ) -> None:
         value = _method_value(method)
         handle = new_handle(
@@ -157,7 +166,10 @@ class Contact:
         check(lib.orthoslip_contact_set_friction(handle, mu))
         check(lib.orthoslip_contact_set_method(handle, value))
         check(lib.orthoslip_contact_set_tolerance(handle, tol))
+        if traction_tol is not None:
+            check(lib.orthoslip_contact_set_traction_tolerance(handle, traction_tol))
         self._handle = handle
+        self._traction_tol = traction_tol
         self._material = material
         self._mu = float(mu)
         self._method = Method(value)
@@ -183,12 +195,17 @@ class Contact:
         """The tolerance."""
         return self._tol
 
+    @property
+    def traction_tol(self) -> float | None:
+        """The traction tolerance given (None: it follows ``tol``)."""
+        return self._traction_tol
+
     def solve(self) -> Solution:
         """Solves the scene.
 
         Raises:
             NoConvergenceError: the method did not converge (e.g. a stick zone below 1e-35).
-            ToleranceNotMetError: the method's error estimate exceeds ``tol``.
+            ToleranceNotMetError: an error estimate exceeds ``tol`` or ``traction_tol``.
         """
         return Solution(
             new_handle(
@@ -202,7 +219,7 @@ class Contact:
     def __repr__(self) -> str:
         return (
             f"Contact({self.material!r}, mu={self.mu!r}, method={self.method.name.lower()!r}, "
-            f"tol={self.tol!r})"
+            f"tol={self.tol!r}, traction_tol={self.traction_tol!r})"
         )
 
 
@@ -216,6 +233,8 @@ class Solution:
         method: the method that produced the solution (never ``Method.AUTO``).
         error_estimate: the estimated |c - c_exact| against the exact coupled problem
             (``inf`` where the model-error table gives no bound for an approximation).
+        traction_error_estimate: the estimated int (|p - p_exact| + |q - q_exact|) dx over
+            the punch, in units of the load (``inf`` where an approximation has no bound).
     """
 
     def __init__(self, handle: Any) -> None:
@@ -225,6 +244,9 @@ class Solution:
         self.slip_width: float = get("double", lib.orthoslip_solution_slip_width, handle)
         self.method = Method(get("orthoslip_method", lib.orthoslip_solution_method, handle))
         self.error_estimate: float = get("double", lib.orthoslip_solution_error_estimate, handle)
+        self.traction_error_estimate: float = get(
+            "double", lib.orthoslip_solution_traction_error_estimate, handle
+        )
 
     def _evaluate(self, function: Any, inputs: list[npt.ArrayLike], outputs: int) -> list[Any]:
         """Calls ``function(handle, in_0, ..., n, out_0, ...)`` of the C ABI over the inputs

@@ -123,3 +123,24 @@ def test_version_is_the_packages() -> None:
     from importlib.metadata import version
 
     assert orthoslip.__version__ == version("orthoslip")
+
+
+def test_traction_tolerance_steers_auto() -> None:
+    # b* = 0.2, mu~ = 100 (effective(1, 1 - 2 b*, 1, 1)): GOODMAN's c is within 1e-6, its
+    # tractions are not.
+    reduced = Material.effective(1.0, 0.6, 1.0, 1.0)
+    default = Contact(reduced, 100.0, tol=1e-6)
+    assert default.traction_tol is None
+    s = default.solve()
+    assert s.method is not Method.GOODMAN
+    assert 0 <= s.traction_error_estimate <= 1e-6
+    c_only = Contact(reduced, 100.0, tol=1e-6, traction_tol=math.inf)
+    g = c_only.solve()
+    assert g.method is Method.GOODMAN
+    assert g.error_estimate <= 1e-6 < g.traction_error_estimate
+    assert "traction_tol=inf" in repr(c_only)
+    # the exact tractions differ from GOODMAN's by about what it claims at most
+    x = np.linspace(-0.99, 0.99, 199)
+    (p, q), (pg, qg) = s.tractions(x), g.tractions(x)
+    l1 = np.sum(np.abs(p - pg) + np.abs(q - qg)) * (x[1] - x[0])
+    assert 1e-3 < l1 <= g.traction_error_estimate

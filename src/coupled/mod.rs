@@ -41,7 +41,7 @@ mod tests;
 use crate::error::{Error, Result};
 use crate::numerics::quadrature::gauss_legendre_nodes;
 use crate::numerics::roots::brent;
-use crate::problem::{Coupling, Profile, StickEdge, validate_tolerance};
+use crate::problem::{Coupling, Profile, StickEdge, traction_parts, validate_tolerance};
 use mesh::{Layout, Pt};
 use system::{Constants, Discrete, Families, solve_fixed};
 
@@ -95,6 +95,9 @@ pub struct CoupledSolution {
     coupling: Coupling,
     edge: StickEdge,
     error: f64,
+    /// Estimate of the traction error: [`ORDER_SAFETY`] times the distance between the
+    /// tractions of the last two orders ([`crate::problem::traction_distance`]).
+    traction_error: f64,
     /// q = delta q~ (1 when bp = 0).
     delta: f64,
     /// None for mu = 0 (p = p0, q = 0 exactly).
@@ -126,6 +129,10 @@ impl Profile for CoupledSolution {
 
     fn numerical_error(&self) -> f64 {
         self.error
+    }
+
+    fn traction_error(&self) -> f64 {
+        self.traction_error
     }
 
     /// (p, q) at 0 <= x < 1: one panel lookup and two short Legendre sums.
@@ -470,6 +477,7 @@ pub fn solve(k: &Coupling, tol: f64) -> Result<CoupledSolution> {
             coupling: *k,
             edge: StickEdge::from_c(0.0),
             error: 0.0,
+            traction_error: 0.0,
             delta: 1.0,
             discrete: None,
             order: 0,
@@ -515,10 +523,16 @@ pub fn solve(k: &Coupling, tol: f64) -> Result<CoupledSolution> {
             } else {
                 StickEdge::from_one_minus_c(w)
             };
+            let (dp, dq) = traction_parts(
+                |x| next.discrete.eval(Pt { x, u: 1.0 - x }),
+                |x| root.discrete.eval(Pt { x, u: 1.0 - x }),
+                [c, root.discrete.mesh.c],
+            );
             return Ok(CoupledSolution {
                 coupling: *k,
                 edge,
                 error: diff,
+                traction_error: ORDER_SAFETY * (dp + delta * dq),
                 delta,
                 discrete: Some(next.discrete),
                 order: n,

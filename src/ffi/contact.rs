@@ -90,12 +90,12 @@ pub unsafe extern "C" fn orthoslip_contact_set_method(
     })
 }
 
-/// Sets the tolerance: the target for |c - c_exact| (finite, 0 < tol < 1; default 1e-8).
-/// ORTHOSLIP_METHOD_AUTO picks the cheapest method whose error estimate meets it;
-/// ORTHOSLIP_METHOD_COUPLED and ORTHOSLIP_METHOD_LCP refine until they meet it (COUPLED's
-/// tractions are then accurate to about 100 tol relative, so tol = 1e-10 gives tractions to
-/// 1e-8); the closed-form approximations (GOODMAN, SPENCE) ignore it and report their model
-/// error in `orthoslip_solution_error_estimate`.
+/// Sets the tolerance: the target for |c - c_exact| (finite, 0 < tol < 1; default 1e-8) and,
+/// unless `orthoslip_contact_set_traction_tolerance` set it apart, for the traction error of
+/// `orthoslip_solution_traction_error_estimate`. ORTHOSLIP_METHOD_AUTO picks the cheapest
+/// method whose error estimates meet both; ORTHOSLIP_METHOD_COUPLED and ORTHOSLIP_METHOD_LCP
+/// refine until they meet both; the closed-form approximations (GOODMAN, SPENCE) ignore it
+/// and report their model errors in the two estimates.
 ///
 /// Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER or ORTHOSLIP_ERROR_INVALID_ARGUMENT
 /// (the contact is then unchanged).
@@ -134,4 +134,26 @@ pub unsafe extern "C" fn orthoslip_contact_solve(
             })
         })
     }
+}
+
+/// Sets the traction tolerance: the target for the traction error of
+/// `orthoslip_solution_traction_error_estimate` (tol > 0; INFINITY means "tractions not
+/// needed": only the tolerance on c counts). Until this is called, the traction tolerance
+/// follows `orthoslip_contact_set_tolerance`. ORTHOSLIP_METHOD_AUTO picks the cheapest method
+/// meeting both tolerances; COUPLED and LCP refine until both are met; GOODMAN and SPENCE
+/// ignore it.
+///
+/// Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER or ORTHOSLIP_ERROR_INVALID_ARGUMENT
+/// (tol NaN, zero or negative; the contact is then unchanged).
+///
+/// # Safety
+/// `k` must be NULL or a live contact not used by another thread during the call.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn orthoslip_contact_set_traction_tolerance(
+    k: *mut orthoslip_contact,
+    tol: f64,
+) -> orthoslip_status {
+    run("orthoslip_contact_set_traction_tolerance", || unsafe {
+        Ok(deref_mut(k, "k")?.inner.set_traction_tolerance(tol)?)
+    })
 }

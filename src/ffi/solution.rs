@@ -136,3 +136,28 @@ pub unsafe extern "C" fn orthoslip_solution_error_estimate(
         write_all([(c_error, "c_error")], [v])
     })
 }
+
+/// Writes the solution's estimate of its traction error
+/// e_t = int_{-1}^{1} (|p(x) - p_exact(x)| + |q(x) - q_exact(x)|) dx, in units of the normal
+/// load P (p and q per P/a, int p dx = 1). No weight is needed: the punch-edge singularities
+/// p, |q| ~ (1 - |x|)^(-g), g <= 1/2, are integrable. An integral norm, because a stick edge
+/// off by dc moves the shear traction's step at x = c: a pointwise norm would see O(dc^g)
+/// there, this one O(mu p(c) dc).
+/// COUPLED: from its last two orders; LCP: from its last two grids; GOODMAN and SPENCE: an
+/// empirical model-error bound (a table measured offline against COUPLED, validated off its
+/// grid, not certified), +INFINITY where the table gives no bound. Never NaN.
+///
+/// Returns ORTHOSLIP_OK or ORTHOSLIP_ERROR_NULL_POINTER (nothing written).
+///
+/// # Safety
+/// `s` must be NULL or a live solution; `err` NULL or valid for one write.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn orthoslip_solution_traction_error_estimate(
+    s: *const orthoslip_solution,
+    err: *mut f64,
+) -> orthoslip_status {
+    run("orthoslip_solution_traction_error_estimate", || unsafe {
+        let v = deref(s, "s")?.inner.traction_error_estimate();
+        write_all([(err, "err")], [v])
+    })
+}

@@ -25,7 +25,7 @@ mod stick_edge;
 use crate::error::{Error, Result};
 use crate::field::{Expand, Expansion, Family, Panel, fit};
 use crate::numerics::cauchy::Weight;
-use crate::problem::{Coupling, Profile, StickEdge, validate_tolerance};
+use crate::problem::{Coupling, Profile, StickEdge, traction_distance, validate_tolerance};
 use discretisation::Grid;
 use smoothing_newton::Controls;
 
@@ -43,6 +43,8 @@ pub struct LcpSolution {
     edge: StickEdge,
     stick_points: usize,
     error: f64,
+    /// Estimate of the traction error (see `Ladder::step`).
+    traction_error: f64,
     iterations: usize,
 }
 
@@ -60,6 +62,8 @@ const WARM_SMOOTHING: f64 = 1e-3;
 const COMPLEMENTARITY_TOL: f64 = 1e-12;
 /// Newton iteration cap per grid.
 const MAX_NEWTON: usize = 100;
+/// Factor on the traction difference between two successive grids in the traction error.
+const TRACTION_SAFETY: f64 = 4.0;
 
 fn controls(eps0: f64) -> Controls {
     Controls {
@@ -104,6 +108,7 @@ fn solve_level(k: &Coupling, grid: Grid, start: Option<&LcpSolution>) -> Result<
             edge: StickEdge::from_c(0.0),
             stick_points: 0,
             error: 0.0,
+            traction_error: f64::INFINITY,
             iterations: 0,
         });
     }
@@ -143,6 +148,7 @@ fn solve_level(k: &Coupling, grid: Grid, start: Option<&LcpSolution>) -> Result<
         },
         stick_points: e.stick_points,
         error: f64::INFINITY,
+        traction_error: f64::INFINITY,
         iterations: root.iterations,
     })
 }
@@ -173,8 +179,16 @@ impl Ladder {
     /// against COUPLED: near full stick, with 1 - c a few h (b* = 0.53, mu~ = 46 .. 464;
     /// b* = 0.61, mu~ = 10), the error reached 1.4 times the former 1.5 d + h / 4. When c is
     /// not bracketed (c < x_0 or c > x_{n-1}) the half-panel h / 2 is the floor.
+    ///
+    /// The traction error ([`crate::problem::traction_distance`]) is estimated from the
+    /// previous grid's tractions as [`TRACTION_SAFETY`] times their distance (the pressure's
+    /// last panel converges like h^(1 - g), so the error is up to 1 / (2^(1/2) - 1) = 2.4
+    /// times the difference).
     fn step(&mut self, n: usize) -> Result<()> {
         let mut s = solve_level(&self.coupling, Grid::new(n), self.finest.as_ref())?;
+        if let Some(coarse) = &self.finest {
+            s.traction_error = TRACTION_SAFETY * traction_distance(&s, coarse);
+        }
         self.edges.push(s.edge.c);
         let m = self.edges.len();
         if s.coupling.mu == 0.0 {
@@ -214,9 +228,11 @@ pub fn solve(k: &Coupling, n: usize) -> Result<LcpSolution> {
 }
 
 /// Doubles the grid from 25 panels until the error estimate (defined from the third grid,
-/// n = 100, on) is <= `tol`, up to `MAX_PANELS` = 1600 panels per half-width (2-3 s
-/// measured on 2 shared cores); otherwise `Error::ToleranceNotMet` with the estimate reached.
-pub fn solve_to_tolerance(k: &Coupling, tol: f64) -> Result<LcpSolution> {
+/// n = 100, on) is <= `tol` and the traction error estimate <= `traction_tol` (infinity:
+/// tractions not needed), up to `MAX_PANELS` = 1600 panels per half-width (2-3 s
+/// measured on 2 shared cores); otherwise `Error::ToleranceNotMet` with the estimate reached,
+/// at once where the traction estimate shows that `MAX_PANELS` would not do.
+pub fn solve_to_tolerance(k: &Coupling, tol: f64, traction_tol: f64) -> Result<LcpSolution> {
     validate_tolerance(tol)?;
     let mut ladder = Ladder::new(k)?;
     let mut n = COARSEST;
@@ -225,14 +241,26 @@ pub fn solve_to_tolerance(k: &Coupling, tol: f64) -> Result<LcpSolution> {
         let Some(s) = ladder.finest.as_ref() else {
             return Err(Error::Internal("LCP ladder without a solution".into()));
         };
-        if s.error <= tol {
+        // (the traction estimate needs a second grid, also where c is exact: mu = 0)
+        if s.error <= tol && s.traction_error.is_finite() && s.traction_error <= traction_tol {
             return finish(ladder);
         }
-        if 2 * n > MAX_PANELS {
+        // the traction error falls like h^(1/2) at worst (the edge panels): give up at once
+        // when even `MAX_PANELS` would not bring it within reach
+        let hopeless = s.traction_error * (n as f64 / MAX_PANELS as f64).sqrt() > traction_tol;
+        if 2 * n > MAX_PANELS || (n >= 4 * COARSEST && hopeless) {
+            let (estimate, tolerance, what) = if s.error > tol && !hopeless {
+                (s.error, tol, "c")
+            } else {
+                (s.traction_error, traction_tol, "the tractions")
+            };
             return Err(Error::ToleranceNotMet {
-                estimate: s.error,
-                tolerance: tol,
-                detail: format!("first-order LCP discretisation capped at {n} panels"),
+                estimate,
+                tolerance,
+                detail: format!(
+                    "first-order LCP discretisation at {n} panels, capped at {MAX_PANELS} \
+                     (error in {what})"
+                ),
             });
         }
         n *= 2;
@@ -337,6 +365,9 @@ impl Profile for LcpSolution {
     }
     fn numerical_error(&self) -> f64 {
         self.error
+    }
+    fn traction_error(&self) -> f64 {
+        self.traction_error
     }
     /// Linear interpolation of the regular parts p / w, q / w between midpoints, with
     /// w = (1 - x)^(-g) the edge weight (panel values divided by the panel average of w).

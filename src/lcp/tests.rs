@@ -271,12 +271,12 @@ fn invalid_arguments_and_tolerance_control() {
     }
     assert!(matches!(solve(&ok, 99), Err(Error::InvalidArgument(_))));
     assert!(matches!(
-        solve_to_tolerance(&ok, 0.0),
+        solve_to_tolerance(&ok, 0.0, f64::INFINITY),
         Err(Error::InvalidArgument(_))
     ));
-    let s = solve_to_tolerance(&ok, 3e-3).unwrap();
+    let s = solve_to_tolerance(&ok, 3e-3, f64::INFINITY).unwrap();
     assert!(s.numerical_error() <= 3e-3 && s.panels() >= 100);
-    match solve_to_tolerance(&ok, 1e-5) {
+    match solve_to_tolerance(&ok, 1e-5, f64::INFINITY) {
         Err(Error::ToleranceNotMet { estimate, .. }) => assert!(estimate > 1e-5),
         other => panic!("expected ToleranceNotMet, got {other:?}"),
     }

@@ -1,5 +1,7 @@
 //! Model error of the closed-form approximations: empirical bounds on |c_approx - c_exact|
-//! for Goodman's and Spence's c, used for their error estimates and by METHOD_AUTO.
+//! for Goodman's and Spence's c, and on their traction error
+//! ([`crate::problem::traction_distance`]), used for their error estimates and by
+//! METHOD_AUTO.
 //!
 //! c depends on the material and the friction only through (b*, mu~) (THEORY.md section 4),
 //! for the approximations as for the exact problem, so the model error is a function on that
@@ -13,6 +15,10 @@
 //! small). `tests/model_error_table.rs` recomputes every entry of the committed table and
 //! checks the bound against COUPLED at 200 random points off the grid (the worst
 //! error / bound it printed: 0.50 for Goodman, 0.54 for Spence).
+//!
+//! The traction error is tabulated as max(int |dp|, int |dq~|) in the reduced problem
+//! (q = delta q~ with the same p, THEORY.md section 4), so that the bound in a material with
+//! delta != 1 is (1 + delta) times it ([`traction_bound`]).
 //!
 //! Why a table and not an a-posteriori residual: the residual of eq. (10) for Goodman's p0 is
 //! bp q, known at once, but turning it into a bound on c needs the sensitivity of c to the
@@ -44,12 +50,51 @@ pub use table::{B_STAR, LOG10_MU};
 /// One approximation's tabulated errors: rows over [`B_STAR`], columns over [`LOG10_MU`].
 pub type Grid = [[f64; LOG10_MU.len()]; B_STAR.len()];
 
-/// The tabulated model errors of an approximation.
+/// The tabulated model errors of an approximation in c.
 pub fn tabulated(a: Approximation) -> &'static Grid {
     match a {
         Approximation::Goodman => &table::GOODMAN,
         Approximation::Spence => &table::SPENCE,
     }
+}
+
+/// The tabulated model errors of an approximation in the tractions (reduced problem).
+pub fn tabulated_tractions(a: Approximation) -> &'static Grid {
+    match a {
+        Approximation::Goodman => &table::GOODMAN_TRACTIONS,
+        Approximation::Spence => &table::SPENCE_TRACTIONS,
+    }
+}
+
+/// Added to every traction bound: the traction accuracy of the COUPLED reference at
+/// [`FLOOR`] (its own estimate stays below 1e-8 on the grid).
+pub const TRACTION_FLOOR: f64 = 1e-8;
+
+/// An empirical bound on the traction error of the approximation at the coupling k
+/// ([`crate::problem::traction_distance`] from the exact tractions): (1 + delta) times
+/// [`SAFETY`] times the worst tabulated value at the corners of the cell, plus
+/// [`TRACTION_FLOOR`]; below the first column of mu~ the first column's values (the error
+/// vanishes with mu~; checked off the grid down to mu~ = 1e-3), None above the last column,
+/// outside the rows of b* or where the reference failed nearby.
+pub fn traction_bound(a: Approximation, k: &Coupling) -> Option<f64> {
+    if k.mu == 0.0 {
+        return Some(0.0); // every method gives p = p0 and q = 0 exactly
+    }
+    let (reduced, delta) = k.reduced();
+    let (b, l) = (reduced.bp, reduced.mu.log10().max(LOG10_MU[0]));
+    if !(B_STAR[0]..=B_STAR[B_STAR.len() - 1]).contains(&b) || l > LOG10_MU[LOG10_MU.len() - 1] {
+        return None;
+    }
+    let worst = corner_max(tabulated_tractions(a), b, l);
+    worst
+        .is_finite()
+        .then_some((1.0 + delta) * SAFETY * worst + TRACTION_FLOOR)
+}
+
+/// The largest of the grid's values at the corners of the cell holding (b*, log10 mu~).
+fn corner_max(e: &Grid, b: f64, l: f64) -> f64 {
+    let ((i0, i1), (j0, j1)) = (interval(&B_STAR, b), interval(&LOG10_MU, l));
+    e[i0][j0].max(e[i0][j1]).max(e[i1][j0]).max(e[i1][j1])
 }
 
 /// Per row of [`B_STAR`]: the largest c of the three methods at the first column and the
@@ -91,9 +136,7 @@ pub fn bound(a: Approximation, k: &Coupling) -> Option<f64> {
     } else if l > LOG10_MU[LOG10_MU.len() - 1] {
         table::ABOVE[i0].max(table::ABOVE[i1])
     } else {
-        let (j0, j1) = interval(&LOG10_MU, l);
-        let e = tabulated(a);
-        e[i0][j0].max(e[i0][j1]).max(e[i1][j0]).max(e[i1][j1])
+        corner_max(tabulated(a), b, l)
     };
     worst.is_finite().then_some(SAFETY * worst + FLOOR)
 }

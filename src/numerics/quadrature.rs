@@ -133,6 +133,42 @@ fn christoffel_weights(rec: &JacobiRecurrence, nodes: &[f64], mass: f64) -> Vec<
     sums.iter().map(|s| mass / s).collect()
 }
 
+/// Composite Gauss-Legendre rule for int_a^b f with integrable power singularities
+/// |x - a|^s, |x - b|^s (s > -1) at both ends: panels shrinking geometrically by `ratio`
+/// towards each end, down to a `depth` fraction of the half-length or 16 ulps of the ends
+/// (the rest is left out), `points` nodes each. Returns (node, weight) pairs.
+pub(crate) fn graded_rule(
+    a: f64,
+    b: f64,
+    ratio: f64,
+    depth: f64,
+    points: usize,
+) -> Vec<(f64, f64)> {
+    let half = 0.5 * (b - a);
+    let mut cuts = vec![a + half];
+    let mut h = half;
+    // no closer to an end than a few of its ulps (the nodes must stay inside)
+    let ulp = f64::EPSILON * a.abs().max(b.abs());
+    while h > depth * half && h * ratio > 16.0 * ulp {
+        h *= ratio;
+        cuts.extend([a + h, b - h]);
+    }
+    cuts.sort_by(f64::total_cmp);
+    cuts.dedup();
+    let nodes = gauss_legendre(points);
+    cuts.windows(2)
+        .flat_map(|w| {
+            let (m, r) = (0.5 * (w[0] + w[1]), 0.5 * (w[1] - w[0]));
+            nodes
+                .0
+                .iter()
+                .zip(&nodes.1)
+                .map(move |(&t, &wt)| (m + r * t, r * wt))
+                .collect::<Vec<_>>()
+        })
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

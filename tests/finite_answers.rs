@@ -1,0 +1,135 @@
+//! No NaN or infinity ever comes with status OK (issue 8, point 2): over the reduced plane
+//! (b* = 0.01 .. 0.99, mu~ = 0 and 1e-3 .. 1e6; THEORY.md section 4: the material
+//! `effective(1, 1 - 2 b*, 1, 1)` with mu = mu~) and at extreme engineering materials, every
+//! method through `Contact`, whenever it returns Ok: c and 1 - c are finite and in [0, 1],
+//! the error estimates on c and on the tractions are not NaN (+infinity only for a closed
+//! form beyond its model-error table), and the tractions at many x in (-1, 1) (also within
+//! 1e-15 of the stick edge and of the punch edges) are finite. The documented p = +inf,
+//! q = +-inf at x = +-1 are checked as such.
+
+use orthoslip::{Contact, Material, Method};
+
+const B_STAR: [f64; 10] = [0.01, 0.05, 0.1, 0.2, 0.3, 0.45, 0.6, 0.8, 0.9, 0.99];
+const MU_TILDE: [f64; 11] = [0.0, 1e-3, 1e-2, 0.1, 1.0, 10.0, 100.0, 1e3, 1e4, 1e5, 1e6];
+const METHODS: [Method; 5] = [
+    Method::Goodman,
+    Method::Spence,
+    Method::Coupled,
+    Method::Lcp,
+    Method::Auto,
+];
+
+/// The points: a spread over (-1, 1), and points within 1e-15 .. 1e-3 of +-c and of +-1.
+fn points(c: f64, one_minus_c: f64) -> Vec<f64> {
+    let mut xs: Vec<f64> = (1..200).map(|i| -1.0 + i as f64 / 100.0).collect();
+    for d in [1e-15, 1e-12, 1e-9, 1e-6, 1e-3] {
+        for x in [c * (1.0 - d), c + one_minus_c * d, 1.0 - d] {
+            if x.abs() < 1.0 {
+                xs.extend([x, -x]);
+            }
+        }
+    }
+    xs
+}
+
+/// What is wrong with the answer of `contact`, if anything (a refusal is fine).
+fn check(contact: &Contact, method: Method, scene: &str, solved: &mut usize) -> Vec<String> {
+    let Ok(s) = contact.solve() else {
+        return Vec::new();
+    };
+    *solved += 1;
+    let closed_form = matches!(s.method(), Method::Goodman | Method::Spence);
+    let (c, w) = (s.c(), s.one_minus_c());
+    let (ec, et) = (s.error_estimate(), s.traction_error_estimate());
+    let mut bad = Vec::new();
+    let at = format!("{scene}, {method:?} (as {:?})", s.method());
+    if !(c.is_finite() && w.is_finite() && (0.0..=1.0).contains(&c) && (0.0..=1.0).contains(&w)) {
+        bad.push(format!("{at}: c = {c}, 1 - c = {w}"));
+    }
+    for (what, e) in [("c", ec), ("traction", et)] {
+        if !(e >= 0.0 && (e.is_finite() || closed_form)) {
+            bad.push(format!("{at}: {what} error estimate {e}"));
+        }
+    }
+    for x in points(c, w) {
+        let (p, q) = s.tractions(x);
+        if !(p.is_finite() && q.is_finite()) {
+            bad.push(format!("{at}: tractions ({p}, {q}) at x = {x:e}"));
+            break;
+        }
+    }
+    let (p, q) = s.tractions(1.0);
+    let mu = s.coupling().mu;
+    if p != f64::INFINITY || q != if mu == 0.0 { 0.0 } else { f64::INFINITY } {
+        bad.push(format!("{at}: ({p}, {q}) at x = 1"));
+    }
+    bad
+}
+
+fn sweep(scenes: Vec<(String, Material, f64)>) {
+    let mut bad = Vec::new();
+    let mut solved = 0;
+    for (scene, m, mu) in &scenes {
+        for method in METHODS {
+            let mut contact = Contact::new(*m);
+            contact.set_friction(*mu).unwrap();
+            contact.set_method(method);
+            // the LCP at its coarsest estimated grid: its answers, not its accuracy, are tested
+            let tol = if method == Method::Lcp { 0.5 } else { 1e-6 };
+            contact.set_tolerance(tol).unwrap();
+            if method == Method::Lcp {
+                contact.set_traction_tolerance(f64::INFINITY).unwrap();
+            }
+            bad.extend(check(&contact, method, scene, &mut solved));
+        }
+    }
+    println!(
+        "{solved} answers of {} solves checked",
+        scenes.len() * METHODS.len()
+    );
+    assert!(
+        bad.is_empty(),
+        "{} bad answers:\n{}",
+        bad.len(),
+        bad.join("\n")
+    );
+}
+
+#[test]
+fn reduced_plane() {
+    let mut scenes = Vec::new();
+    for b in B_STAR {
+        let m = Material::effective(1.0, 1.0 - 2.0 * b, 1.0, 1.0).unwrap();
+        for mu in MU_TILDE {
+            scenes.push((format!("b* = {b}, mu~ = {mu:e}"), m, mu));
+        }
+    }
+    sweep(scenes);
+}
+
+#[test]
+fn extreme_materials() {
+    let e = |nu: f64, delta: f64, kappa: f64| Material::effective(70e9, nu, delta, kappa).unwrap();
+    let materials = [
+        ("nu = 1 - 1e-9", e(1.0 - 1e-9, 1.0, 1.0)),
+        ("kappa = -nu + 1e-12", e(0.3, 1.0, -0.3 + 1e-12)),
+        ("delta = 1e-3", e(0.3, 1e-3, 1.0)),
+        ("delta = 1e3", e(0.3, 1e3, 1.0)),
+        ("auxetic nu = -0.98", e(-0.98, 1.0, 1.0)),
+        (
+            "plane strain nu = 0.499",
+            Material::plane_strain(70e9, 70e9, 70e9, 70e9 / 2.998, 0.499, 0.499, 0.499).unwrap(),
+        ),
+        (
+            "carbon/epoxy ply",
+            Material::plane_stress(181e9, 10.3e9, 7.17e9, 0.28).unwrap(),
+        ),
+    ];
+    let mut scenes = Vec::new();
+    for (name, m) in materials {
+        for mu in [0.0, 1e-3, 0.3, 10.0, 1e4] {
+            scenes.push((format!("{name}, mu = {mu:e}"), m, mu));
+        }
+    }
+    sweep(scenes);
+}
