@@ -31,7 +31,9 @@ use crate::numerics::orthopoly::{legendre, legendre_sum};
 use crate::numerics::quadrature::{gauss_jacobi, gauss_legendre};
 
 /// Lower ends of the far bands in rho (the last band reaches to infinity).
-const BANDS: [f64; 8] = [NEAR_RHO, 2.0, 3.0, 5.0, 10.0, 30.0, 100.0, 1000.0];
+const BANDS: [f64; 13] = [
+    NEAR_RHO, 1.75, 2.0, 2.5, 3.0, 4.0, 5.0, 7.0, 10.0, 20.0, 50.0, 200.0, 1000.0,
+];
 
 /// |z| from which the moment series is used, and its length: FAR_RADIUS^(-MOMENTS) ~ 2e-18.
 const FAR_RADIUS: f64 = 1.5;
@@ -318,8 +320,10 @@ impl KernelPanel {
         self.h * self.anti.iter().map(|f| f.p_from(t, omt, opt)).sum::<f64>()
     }
 
-    /// int over this panel of q(s) ln|x - s| ds for real x.
-    fn log_q(&self, x: f64, scratch: &mut [C64]) -> f64 {
+    /// int over this panel of q(s) ln|x - s| ds for real x, minus the same at -x when
+    /// `mirror` (x >= 0: the mirror is then farther, and one far rule with one logarithm per
+    /// node, ln|(x - s) / (x + s)|, serves both).
+    fn log_q(&self, x: f64, mirror: bool, scratch: &mut [C64]) -> f64 {
         let z = Point {
             x,
             w: C64::new(0.0, -0.0),
@@ -327,17 +331,26 @@ impl KernelPanel {
         match KernelPanel::band(self.rho(z.z())) {
             Some(b) => {
                 let r = &self.far[b];
-                r.x.iter()
-                    .zip(&r.wq)
-                    .map(|(&s, &w)| w * (x - s).abs().ln())
-                    .sum()
+                let nodes = r.x.iter().zip(&r.wq);
+                if mirror {
+                    nodes
+                        .map(|(&s, &w)| w * ((x - s) / (x + s)).abs().ln())
+                        .sum()
+                } else {
+                    nodes.map(|(&s, &w)| w * (x - s).abs().ln()).sum()
+                }
             }
             None => {
                 let l = self.local(z);
                 let (mass, own): (f64, f64) = self.anti.iter().fold((0.0, 0.0), |(m, v), f| {
                     (m + f.mass.1, v + f.log_q(l, scratch))
                 });
-                self.h * (mass * self.h.ln() + own)
+                let other = if mirror {
+                    self.log_q(-x, false, scratch)
+                } else {
+                    0.0
+                };
+                self.h * (mass * self.h.ln() + own) - other
             }
         }
     }
@@ -432,26 +445,74 @@ impl KernelPanel {
     /// This panel and its mirror by one far rule (Re z >= 0, the mirror farther):
     /// pi (g_p(z) - g_p(-z)) = 2z sum wp / ((z - x)(z + x)),
     /// pi (g_q(z) + g_q(-z)) = 2 sum wq x / ((z - x)(z + x)).
+    /// With (z - x)(z + x) = u - i v, u = (Re z - x)(Re z + x) - (Im z)^2 and v = -2 Re z Im z
+    /// the same for every node, 1 / ((z - x)(z + x)) = (u + i v) r with r = 1 / (u^2 + v^2),
+    /// so the sums are real ones ([`FarSums`]), taken in lanes the compiler vectorises.
     fn far_pair(&self, z: C64, band: usize, deriv: bool, t: &mut Transforms) {
         let r = &self.far[band];
-        let (mut sp, mut sq) = (C64::new(0.0, 0.0), C64::new(0.0, 0.0));
-        let (mut sp2, mut sq2) = (sp, sq);
-        for ((&x, &wp), &wqx) in r.x.iter().zip(&r.wp).zip(&r.wqx) {
-            let inv = ((z - x) * (z + x)).inv();
-            sp += inv * wp;
-            sq += inv * wqx;
-            if deriv {
-                let inv2 = inv * inv;
-                sp2 += inv2 * wp;
-                sq2 += inv2 * wqx;
-            }
-        }
+        let v = -2.0 * z.re * z.im;
+        let s = FarSums::new(&r.x, &r.wp, &r.wqx, z, v, deriv);
+        let sp = C64::new(s.p[0], v * s.p[1]);
+        let sq = C64::new(s.q[0], v * s.q[1]);
         t.p += z * sp * 2.0;
         t.q += sq * 2.0;
         if deriv {
+            // 1 / ((z - x)(z + x))^2 = (u^2 - v^2 + 2 i u v) r^2
+            let sp2 = C64::new(s.p[2] - v * v * s.p[3], 2.0 * v * s.p[4]);
+            let sq2 = C64::new(s.q[2] - v * v * s.q[3], 2.0 * v * s.q[4]);
             // d/dz 2z/(z^2 - x^2) = 2/(z^2 - x^2) - 4 z^2/(z^2 - x^2)^2; 2x/(...) gives -4xz/(...)^2
             t.dp += sp * 2.0 - z * z * sp2 * 4.0;
             t.dq -= z * sq2 * 4.0;
+        }
+    }
+}
+
+/// Lanes of the far-rule sums (independent accumulators, so that the compiler can vectorise).
+const LANES: usize = 4;
+
+/// The real sums of [`KernelPanel::far_pair`] over the nodes, for the weights wp and wq x:
+/// sum w u r, sum w r and, for the derivatives, sum w u^2 r^2, sum w r^2, sum w u r^2.
+struct FarSums {
+    p: [f64; 5],
+    q: [f64; 5],
+}
+
+impl FarSums {
+    fn new(x: &[f64], wp: &[f64], wq: &[f64], z: C64, v: f64, deriv: bool) -> Self {
+        let (zr, v2) = (z.re, z.im * z.im);
+        let vv = v * v;
+        let mut acc = [[[0.0; LANES]; 5]; 2];
+        let mut add = |l: usize, x: f64, wp: f64, wq: f64| {
+            let u = (zr - x) * (zr + x) - v2;
+            let r = 1.0 / (u * u + vv);
+            let (ur, uur) = (u * r, u * r * u * r);
+            for (acc, w) in acc.iter_mut().zip([wp, wq]) {
+                acc[0][l] += w * ur;
+                acc[1][l] += w * r;
+                if deriv {
+                    acc[2][l] += w * uur;
+                    acc[3][l] += w * r * r;
+                    acc[4][l] += w * ur * r;
+                }
+            }
+        };
+        let n = x.len() / LANES * LANES;
+        for ((x, wp), wq) in x[..n]
+            .chunks_exact(LANES)
+            .zip(wp.chunks_exact(LANES))
+            .zip(wq.chunks_exact(LANES))
+        {
+            for l in 0..LANES {
+                add(l, x[l], wp[l], wq[l]);
+            }
+        }
+        for j in n..x.len() {
+            add(0, x[j], wp[j], wq[j]);
+        }
+        let total = |a: &[[f64; LANES]; 5]| a.map(|lanes| lanes.iter().sum::<f64>());
+        FarSums {
+            p: total(&acc[0]),
+            q: total(&acc[1]),
         }
     }
 }
@@ -533,13 +594,13 @@ impl Kernel {
             .sum()
     }
 
-    /// L_q(x) = int_{-1}^{1} q(s) ln|x - s| ds for real x (q odd: each panel minus its
+    /// L_q(x) = int_{-1}^{1} q(s) ln|x - s| ds for real x >= 0 (q odd: each panel minus its
     /// value at -x).
     pub(crate) fn log_potential_q(&self, x: f64) -> f64 {
         let mut scratch = [C64::new(0.0, 0.0); MAX_DEGREE + 1];
         self.panels
             .iter()
-            .map(|p| p.log_q(x, &mut scratch) - p.log_q(-x, &mut scratch))
+            .map(|p| p.log_q(x, true, &mut scratch))
             .sum()
     }
 

@@ -168,7 +168,15 @@ fn end_cauchy_complex(e: f64, s: C64, two_minus_s: C64) -> (C64, C64) {
         return (value, -e.exp2() / two_minus_s + lower * e);
     }
     let value = if e == 0.0 {
-        two_minus_s.ln() - (-s).ln()
+        // ln(2 - s) - ln(-s): one real logarithm of the ratio of squared moduli (two where
+        // one of them is too small to square, a point at an end), the arguments as they are
+        let (a2, b2) = (two_minus_s.norm_sqr(), s.norm_sqr());
+        let re = if a2 > f64::MIN_POSITIVE && b2 > f64::MIN_POSITIVE {
+            0.5 * (a2 / b2).ln()
+        } else {
+            two_minus_s.norm().ln() - s.norm().ln()
+        };
+        C64::new(re, two_minus_s.arg() - (-s).arg())
     } else {
         let whole = (-s).powf(e) * (PI / (-PI * e).sin());
         whole - lerch_phi1(s * 0.5, two_minus_s * 0.5, -e) * e.exp2()

@@ -191,13 +191,15 @@ const LERCH_DISC: f64 = 0.6;
 /// its zero imaginary part). Near w = 1, DLMF 15.8.10 with (a, b) = (1, a) gives
 ///   Phi = sum_k (a)_k / k! [psi(k + 1) - psi(a + k) - ln(1 - w)] (1 - w)^k.
 pub(crate) fn lerch_phi1(w: Complex<f64>, one_minus_w: Complex<f64>, a: f64) -> Complex<f64> {
+    // convergence tests on squared moduli (no hypot in the loop)
+    let tol2 = SERIES_TOL * SERIES_TOL;
     let mut sum = Complex::new(0.0, 0.0);
-    if w.norm() <= LERCH_DISC {
+    if w.norm_sqr() <= LERCH_DISC * LERCH_DISC {
         let mut power = Complex::new(1.0, 0.0);
         for n in 0..MAX_TERMS {
             let term = power / (n as f64 + a);
             sum += term;
-            if term.norm() <= SERIES_TOL * sum.norm() {
+            if term.norm_sqr() <= tol2 * sum.norm_sqr() {
                 break;
             }
             power *= w;
@@ -212,7 +214,7 @@ pub(crate) fn lerch_phi1(w: Complex<f64>, one_minus_w: Complex<f64>, a: f64) -> 
         let kf = k as f64;
         let term = power * r * (Complex::new(psi, 0.0) - log);
         sum += term;
-        if k > 0 && term.norm() <= SERIES_TOL * sum.norm() {
+        if k > 0 && term.norm_sqr() <= tol2 * sum.norm_sqr() {
             break;
         }
         psi += 1.0 / (kf + 1.0) - 1.0 / (a + kf);
