@@ -194,12 +194,12 @@ orthoslip_status orthoslip_contact_set_friction(orthoslip_contact *k, double mu)
 orthoslip_status orthoslip_contact_set_method(orthoslip_contact *k, orthoslip_method method);
 
 /**
- * Sets the tolerance: the target for |c - c_exact| (finite, 0 < tol < 1; default 1e-8).
- * ORTHOSLIP_METHOD_AUTO picks the cheapest method whose error estimate meets it;
- * ORTHOSLIP_METHOD_COUPLED and ORTHOSLIP_METHOD_LCP refine until they meet it (COUPLED's
- * tractions are then accurate to about 100 tol relative, so tol = 1e-10 gives tractions to
- * 1e-8); the closed-form approximations (GOODMAN, SPENCE) ignore it and report their model
- * error in `orthoslip_solution_error_estimate`.
+ * Sets the tolerance: the target for |c - c_exact| (finite, 0 < tol < 1; default 1e-8) and,
+ * unless `orthoslip_contact_set_traction_tolerance` set it apart, for the traction error of
+ * `orthoslip_solution_traction_error_estimate`. ORTHOSLIP_METHOD_AUTO picks the cheapest
+ * method whose error estimates meet both; ORTHOSLIP_METHOD_COUPLED and ORTHOSLIP_METHOD_LCP
+ * refine until they meet both; the closed-form approximations (GOODMAN, SPENCE) ignore it
+ * and report their model errors in the two estimates.
  *
  * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER or ORTHOSLIP_ERROR_INVALID_ARGUMENT
  * (the contact is then unchanged).
