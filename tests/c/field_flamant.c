@@ -126,6 +126,7 @@ int main(void)
             /* COUPLED's tractions carry its wrong-c modes |x - c|^(g-1) at the size of its
                error, which the field leaves out: solve tightly enough for them to vanish */
             CHECK_OK(orthoslip_contact_set_tolerance(contact, 1e-12));
+            CHECK_OK(orthoslip_contact_set_traction_tolerance(contact, 1e-8)); /* the field's target */
             CHECK_OK(orthoslip_contact_solve(contact, &s));
             f = solution_field(s, methods[j], bp, mu);
             CHECK_OK(orthoslip_solution_tractions(s, &x0, 1, &p0, &q0));

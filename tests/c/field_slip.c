@@ -72,6 +72,7 @@ int main(void)
             gsl_function fn;
             double from = 0.0, integral = 0.0, stick[2], zero[2];
             CHECK_OK(orthoslip_contact_set_tolerance(contact, 1e-10));
+            CHECK_OK(orthoslip_contact_set_traction_tolerance(contact, 1e-8)); /* the field's target */
             CHECK_OK(orthoslip_contact_solve(contact, &s));
             f = solution_field(s, methods[j], bp, mu);
             stick[0] = 0.5 * f.c;
