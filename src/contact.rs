@@ -43,13 +43,6 @@ impl Method {
 /// Default target for |c - c_exact| (and, unless set apart, for the traction error).
 pub const DEFAULT_TOLERANCE: f64 = 1e-8;
 
-/// Smallest tolerance on c that COUPLED is re-run with to meet a traction tolerance.
-const TIGHTEST_COUPLED: f64 = 1e-12;
-
-/// COUPLED's traction estimate over its tolerance on c, at most (measured: up to 46 at
-/// tolerances 1e-4 .. 1e-8 on six scenes of the reduced plane, b* = 0.1 .. 0.7).
-const TRACTION_PER_C: f64 = 50.0;
-
 /// A scene: the material, the friction coefficient and how to solve it.
 #[derive(Clone, Debug)]
 pub struct Contact {
@@ -114,7 +107,7 @@ impl Contact {
         let profile: Box<dyn Solved> = match method {
             Method::Goodman => Box::new(goodman::solve(&k)?),
             Method::Spence => Box::new(spence::solve(&k)?),
-            Method::Coupled | Method::Auto => Box::new(coupled_to(&k, tol, ttol)?),
+            Method::Coupled | Method::Auto => Box::new(coupled::solve_to(&k, tol, ttol)?),
             Method::Lcp => Box::new(lcp::solve_to_tolerance(&k, tol, ttol)?),
         };
         let (model, traction_model) = match method {
@@ -176,33 +169,6 @@ fn model_bounds(a: Approximation, k: &Coupling) -> (f64, f64) {
         inf(model_error::bound(a, k)),
         inf(model_error::traction_bound(a, k)),
     )
-}
-
-/// COUPLED to `tol` in c and `traction_tol` in the tractions. Its stopping rule asks for c
-/// (and a relative traction agreement of about 100 tol), and its traction estimate came out
-/// at up to [`TRACTION_PER_C`] times its tolerance on c, so it
-/// is run to min(tol, traction_tol / TRACTION_PER_C); where its traction estimate still
-/// misses `traction_tol` it is re-run with the tolerance on c scaled down by the ratio missed
-/// (twice over), down to [`TIGHTEST_COUPLED`].
-fn coupled_to(k: &Coupling, tol: f64, traction_tol: f64) -> Result<coupled::CoupledSolution> {
-    let mut tol = tol.min((traction_tol / TRACTION_PER_C).max(TIGHTEST_COUPLED));
-    loop {
-        let s = coupled::solve(k, tol)?;
-        let e = s.traction_error();
-        if e <= traction_tol {
-            return Ok(s);
-        }
-        if tol <= TIGHTEST_COUPLED {
-            return Err(Error::ToleranceNotMet {
-                estimate: e,
-                tolerance: traction_tol,
-                detail: format!("coupled: traction error at tolerance {tol:.0e} in c"),
-            });
-        }
-        tol = (0.5 * tol * traction_tol / e)
-            .min(0.1 * tol)
-            .max(TIGHTEST_COUPLED);
-    }
 }
 
 /// A solved scene: the stick edge, the method used, its error estimate and the tractions.

@@ -327,11 +327,27 @@ fn sweep_prints_c_against_mu() {
 
 #[test]
 fn a_failed_point_of_a_sweep_keeps_the_others_and_exits_1() {
-    // Below c ~ 1e-35 (mu = 1e-4 for the ply) COUPLED does not converge.
-    let args = on_ply(
+    // b* = 0.05 (nu = 0.9): at mu = 1 the slip zones (1 - c ~ 1e-20) are below the panels'
+    // range and too wide for the bonded limit at tolerance 1e-10; at mu = 10 the bonded
+    // limit meets it.
+    let args = [
         "sweep",
-        &["--mu-from", "1e-4", "--mu-to", "1", "--steps", "2"],
-    );
+        "--effective",
+        "1",
+        "0.9",
+        "1",
+        "1",
+        "--method",
+        "coupled",
+        "--tol",
+        "1e-10",
+        "--mu-from",
+        "1",
+        "--mu-to",
+        "10",
+        "--steps",
+        "2",
+    ];
     let json_args = [&args[..], &["--format", "json"]].concat();
     let run = orthoslip(&json_args);
     assert_eq!(run.status, 1);
@@ -339,15 +355,17 @@ fn a_failed_point_of_a_sweep_keeps_the_others_and_exits_1() {
     assert_eq!(v["sweep"]["status"][0], "no_convergence");
     assert!(v["sweep"]["c"][0].is_null());
     assert_eq!(v["sweep"]["status"][1], "ok");
+    let material = Material::effective(1.0, 0.9, 1.0, 1.0).unwrap();
     assert_eq!(
         v["sweep"]["c"][1].as_f64(),
-        Some(library(ply(), 1.0, Method::Auto, None).c())
+        Some(library(material, 10.0, Method::Coupled, Some(1e-10)).c())
     );
     assert_eq!(run.stderr.lines().count(), 1, "{}", run.stderr);
     assert!(
-        run.stderr.starts_with(
-            "orthoslip: 1 of 2 solves failed; the first at mu = 0.0001: no convergence"
-        )
+        run.stderr
+            .starts_with("orthoslip: 1 of 2 solves failed; the first at mu = 1.0: no convergence"),
+        "{}",
+        run.stderr
     );
     let table = orthoslip(&args);
     assert!(
@@ -468,9 +486,22 @@ fn bad_input_exits_2_and_solver_failures_exit_1_with_one_line() {
             "'--steps <N>': 1 is not in 2..=1000000",
         ),
         (
-            solve(&["--mu", "1e-4", "--method", "coupled"]),
+            vec![
+                "solve",
+                "--effective",
+                "1",
+                "0.9",
+                "1",
+                "1",
+                "--mu",
+                "1",
+                "--method",
+                "coupled",
+                "--tol",
+                "1e-10",
+            ],
             1,
-            "no convergence: defect >= 0 down to c = 2e-35",
+            "no convergence: the slip zones (1 - c ~ 6e-21 by the near-bonded law) are too thin",
         ),
         (
             vec![

@@ -6,7 +6,7 @@
 //! q / x are polynomials in x^2, so the fit is exact). q = delta q~.
 
 use super::mesh::{Basis, Pt};
-use super::{CoupledSolution, Discrete};
+use super::{CoupledSolution, Discrete, Regime};
 use crate::field::{Expand, Expansion, Exponents, Family, Panel, fit, sample};
 
 /// Adds `coef` (times `scale`) as the p or q series of the family with `weight`.
@@ -90,10 +90,13 @@ fn from_discrete(d: &Discrete, delta: f64) -> Expansion {
 
 impl Expand for CoupledSolution {
     fn expansion(&self) -> Expansion {
-        match &self.discrete {
-            Some(d) => from_discrete(d, self.delta),
+        match &self.regime {
+            Regime::Panels(d) => from_discrete(d, self.delta),
+            Regime::Uncoupled(g) => g.expansion(),
+            Regime::FullSlip(f) => f.expansion(),
+            Regime::NearBonded(b) => b.expansion(),
             // mu = 0: p = p0 exactly, q = 0
-            None => sample(
+            Regime::Frictionless => sample(
                 self,
                 Exponents {
                     edge: 0.5,

@@ -22,27 +22,45 @@
 //! sign: the first sign change met from c = 0 brackets the physical root (the one
 //! continuous in mu from small friction); a bracket wider than 1 is bisected, then Brent's
 //! method refines the root at order 4 (if a higher order loses it, the search is redone at
-//! that order). The solution is checked for |q| <= mu p on the stick zone before it is
-//! returned.
+//! that order). If that fails, the whole search is redone scanning at order 8. Where the
+//! near-bonded law ([`near_bonded`]) puts 1 - c below 1e-6, the root is instead sought inside
+//! the law's window of lc at order 11 (the low orders lose the defect's sign there). The
+//! solution is checked for |q| <= mu p on the stick zone before it is returned.
 //!
-//! Range: `T_MIN` < lc < `T_MAX`, i.e. c > 2e-35 and 1 - c > 4e-18 (outside it
-//! NoConvergence says so); the number of panels grows like log(1 / min(c, 1 - c)). A solve
-//! is 6-9 cheap order-4 solves, then about two column-pivoted least-squares solves per order
-//! (100-350 unknowns at the last); `cargo run --release --example coupled_timing` measures
-//! the cost.
+//! Regimes ([`solve_to`]): closed forms where their error bounds meet both tolerances, the
+//! panels elsewhere:
+//! - mu = 0: p = p0, q = 0; bp = 0: Goodman's closed form, which is then exact;
+//! - a stick zone below the tolerance: the full-slip limit with the law
+//!   c ~ 4 (1 - b*^2)^(pi / (2 b* mu~)) ([`full_slip`]);
+//! - slip zones below the tolerance (small b*): the bonded punch with the law
+//!   ln((1 - c) / 8) = -kappa arctan(mu~) / eps ([`near_bonded`]).
+//!
+//! Range of the panels: `T_MIN` < lc < `T_MAX`, i.e. c > 2e-35 and 1 - c > 4e-18 (outside
+//! it NoConvergence says so); the number of panels grows like log(1 / min(c, 1 - c)), and
+//! thin slip zones cost seconds (1 - c = 1e-14 at b* = 0.1: ~2000 unknowns). Between the
+//! panels' range and the bonded limit's, i.e. for b* below about 0.12 with 1 - c from about
+//! 1e-21 to 4e-18 at tolerance 1e-10 (1e-17 to 4e-18 at 1e-8), no regime answers yet.
+//! A panel solve is 6-9 cheap order-4 solves, then about two column-pivoted least-squares
+//! solves per order (100-350 unknowns at the last); `cargo run --release --example
+//! coupled_timing` measures the cost.
 
 mod expansion;
+pub(crate) mod full_slip;
 mod mesh;
+pub(crate) mod near_bonded;
 mod system;
 
 #[cfg(test)]
-mod tests;
+pub(crate) mod tests;
 
 use crate::error::{Error, Result};
+use crate::goodman::GoodmanSolution;
 use crate::numerics::quadrature::gauss_legendre_nodes;
 use crate::numerics::roots::brent;
 use crate::problem::{Coupling, Profile, StickEdge, traction_parts, validate_tolerance};
+use full_slip::FullSlip;
 use mesh::{Layout, Pt};
+use near_bonded::NearBonded;
 use system::{Constants, Discrete, Families, solve_fixed};
 
 /// The range of lc = ln(c / (1 - c)) the first-root scan covers: c = e^-80 = 1.8e-35 up to
@@ -62,8 +80,20 @@ const MAX_STEPS_DOWN: usize = 30;
 const SCAN_STEP: f64 = 1.0;
 const SCAN_MAX_STEP: f64 = 3.0;
 
-/// Order of the scan for the first sign change of defect (only its sign is used).
-const SCAN_ORDER: usize = 4;
+/// Orders of the scan for the first sign change of defect (only its sign is used): the cheap
+/// one, then, where it finds no root or one the layouts disagree on (thin slip zones at
+/// small b*, e.g. b* = 0.2, mu~ = 5 and 20; b* = 0.1, mu~ = 1), the one whose sign is right
+/// there, at 2-4 times the cost.
+const SCAN_ORDERS: [usize; 2] = [4, 8];
+
+/// Thin slip zones: where the near-bonded law ([`near_bonded::ln_w_range`]) puts 1 - c below
+/// WINDOW_BELOW, the root is sought inside its range of lc widened by WINDOW_MARGIN on both
+/// sides (narrower than the spacing pi / eps of the roots near full stick, so it holds one),
+/// at WINDOW_ORDER: the low scan orders lose the defect's sign there (b* = 0.05, mu~ = 0.5:
+/// order 4 never crosses zero, order 8 crosses back near lc = 35, order 13 is near-linear).
+const WINDOW_BELOW: f64 = 1e-6;
+const WINDOW_MARGIN: f64 = 1.0;
+const WINDOW_ORDER: usize = 11;
 
 /// Two successive orders must also agree on the tractions to TRACTION_RATIO times the
 /// tolerance (relative, [`traction_gap`]): near full stick a tolerance on c alone is met at
@@ -73,6 +103,18 @@ const TRACTION_RATIO: f64 = 100.0;
 /// The traction agreement asked for at most (below it, the least-squares rounding noise
 /// of the higher orders would decide).
 const TRACTION_FLOOR: f64 = 1e-9;
+
+/// Smallest tolerance on c that the panels are re-run with to meet a traction tolerance.
+const TIGHTEST: f64 = 1e-12;
+
+/// The panels' traction estimate over their tolerance on c, at most (measured: up to 46 at
+/// tolerances 1e-4 .. 1e-8 on six scenes of the reduced plane, b* = 0.1 .. 0.7).
+const TRACTION_PER_C: f64 = 50.0;
+
+/// Most unknowns of a panel system: thin slip zones at small b* need many panels, and beyond
+/// this (about 2000, reached at 1 - c ~ 1e-14, b* = 0.1, order 19) one least-squares solve
+/// takes seconds.
+const MAX_UNKNOWNS: usize = 2000;
 
 /// Factor on the difference of two successive orders' c in the error estimate.
 const ORDER_SAFETY: f64 = 2.0;
@@ -89,32 +131,64 @@ const SCAN_XTOL: f64 = 1e-4;
 /// (the error falls by 10-100 per step of 2, THEORY.md section 5 / tests.rs).
 const ORDERS: [usize; 8] = [6, 8, 11, 13, 16, 19, 22, 26];
 
-/// The coupled solution: stick edge, error estimate and the discretised tractions.
+/// The coupled solution: stick edge, error estimates and the tractions of its regime.
 #[derive(Clone, Debug)]
 pub struct CoupledSolution {
     coupling: Coupling,
     edge: StickEdge,
     error: f64,
-    /// Estimate of the traction error: [`ORDER_SAFETY`] times the distance between the
-    /// tractions of the last two orders ([`crate::problem::traction_distance`]).
+    /// Estimate of the traction error ([`crate::problem::traction_distance`] from the exact
+    /// tractions): for the panels [`ORDER_SAFETY`] times the distance between the tractions
+    /// of the last two orders.
     traction_error: f64,
     /// q = delta q~ (1 when bp = 0).
     delta: f64,
-    /// None for mu = 0 (p = p0, q = 0 exactly).
-    discrete: Option<Discrete>,
-    /// Order per panel of the returned discretisation.
+    regime: Regime,
+    /// Order per panel of the returned discretisation (0 outside the panel regime).
     order: usize,
 }
 
+/// How the solution was obtained.
+#[derive(Clone, Debug)]
+enum Regime {
+    /// mu = 0: p = p0 exactly, q = 0.
+    Frictionless,
+    /// The panel discretisation of the coupled equations.
+    Panels(Discrete),
+    /// bp = 0: p = p0 exactly, so Goodman's closed form is the exact solution.
+    Uncoupled(GoodmanSolution),
+    /// A stick zone below the tolerance: the full-slip limit ([`full_slip`]).
+    FullSlip(FullSlip),
+    /// Slip zones below the tolerance: the bonded punch ([`near_bonded`]).
+    NearBonded(NearBonded),
+}
+
 impl CoupledSolution {
-    /// Polynomial order per panel of the returned discretisation (0 for mu = 0).
+    /// Polynomial order per panel of the returned discretisation (0 for mu = 0 and for the
+    /// closed-form limit regimes).
     pub fn order(&self) -> usize {
         self.order
     }
 
-    /// Number of unknowns of the returned discretisation.
+    /// Number of unknowns of the returned discretisation (0 without one).
     pub fn unknowns(&self) -> usize {
-        self.discrete.as_ref().map_or(0, |d| d.mesh.unknowns)
+        match &self.regime {
+            Regime::Panels(d) => d.mesh.unknowns,
+            _ => 0,
+        }
+    }
+
+    /// The solution of a closed-form regime: its profile, wrapped as the regime.
+    fn from_profile<P: Profile>(profile: P, regime: fn(P) -> Regime) -> Self {
+        CoupledSolution {
+            coupling: profile.coupling(),
+            edge: profile.edge(),
+            error: profile.numerical_error(),
+            traction_error: profile.traction_error(),
+            delta: 1.0,
+            regime: regime(profile),
+            order: 0,
+        }
     }
 }
 
@@ -135,14 +209,17 @@ impl Profile for CoupledSolution {
         self.traction_error
     }
 
-    /// (p, q) at 0 <= x < 1: one panel lookup and two short Legendre sums.
+    /// (p, q) at 0 <= x < 1: on panels one panel lookup and two short Legendre sums.
     fn half_line_tractions(&self, x: f64) -> (f64, f64) {
-        match &self.discrete {
-            None => (crate::goodman::p0(x), 0.0),
-            Some(d) => {
+        match &self.regime {
+            Regime::Frictionless => (crate::goodman::p0(x), 0.0),
+            Regime::Panels(d) => {
                 let (p, q) = d.eval(Pt { x, u: 1.0 - x });
                 (p, self.delta * q)
             }
+            Regime::Uncoupled(g) => g.half_line_tractions(x),
+            Regime::FullSlip(f) => f.half_line_tractions(x),
+            Regime::NearBonded(b) => b.half_line_tractions(x),
         }
     }
 }
@@ -249,10 +326,29 @@ impl<'a> Level<'a> {
         brent(|lc| self.defect(lc), (a, fa), (b, fb), xtol, 100)
     }
 
-    /// First sign change of defect met increasing c from 0 (scanned at order SCAN_ORDER),
-    /// then refined at this level's order.
-    fn first_root(&mut self, lc0: f64) -> Result<f64> {
-        let scan = SCAN_ORDER.min(self.order);
+    /// The first root from `start` (at most this level's order), refined at this level's
+    /// order.
+    fn root_from(&mut self, start: Start) -> Result<f64> {
+        match start {
+            Start::Scan(lc0, order) => self.first_root(lc0, order.min(self.order)),
+            Start::Window(lo, hi) => {
+                let n = WINDOW_ORDER.min(self.order);
+                let (f_lo, f_hi) = (self.defect_at_order(lo, n)?, self.defect_at_order(hi, n)?);
+                if f_lo < 0.0 && f_hi >= 0.0 {
+                    self.refine_bracket((lo, f_lo), (hi, f_hi), n)
+                } else {
+                    Err(Error::NoConvergence(format!(
+                        "no sign change of the defect in the near-bonded window \
+                         {lo} < lc < {hi}"
+                    )))
+                }
+            }
+        }
+    }
+
+    /// First sign change of defect met increasing c from 0 (scanned at order `scan`, at
+    /// most this level's), then refined at this level's order.
+    fn first_root(&mut self, lc0: f64, scan: usize) -> Result<f64> {
         let (mut lo, mut f_lo) = self.scan_start(lc0, scan)?;
         let mut step = SCAN_STEP;
         loop {
@@ -468,21 +564,80 @@ fn admissible(d: &Discrete, mu: f64) -> bool {
     })
 }
 
-/// Solves (E1)-(E4) for `k` to |c - c_exact| <= tol (see the module documentation).
+/// Solves (E1)-(E4) for `k` to |c - c_exact| <= tol, with the tractions as accurate as
+/// that tolerance makes them (see the module documentation; [`solve_to`] sets a traction
+/// tolerance of its own).
 pub fn solve(k: &Coupling, tol: f64) -> Result<CoupledSolution> {
     k.validate()?;
     validate_tolerance(tol)?;
+    match limit_regime(k, tol, tol) {
+        Some(s) => Ok(s),
+        None => panels(k, tol),
+    }
+}
+
+/// Solves (E1)-(E4) for `k` to |c - c_exact| <= tol and a traction error (the norm of
+/// [`crate::problem::traction_distance`]) <= traction_tol (+infinity: c alone). A limit
+/// regime is taken where its bounds meet both; else the panels, whose stopping rule asks for
+/// c (and a relative traction agreement of about 100 tol) and whose traction estimate came
+/// out at up to [`TRACTION_PER_C`] times their tolerance on c: they are run to
+/// min(tol, traction_tol / TRACTION_PER_C), and where the traction estimate still misses
+/// traction_tol re-run with the tolerance on c scaled down by the ratio missed (twice over),
+/// down to [`TIGHTEST`].
+pub fn solve_to(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSolution> {
+    k.validate()?;
+    validate_tolerance(tol)?;
+    if let Some(s) = limit_regime(k, tol, traction_tol) {
+        return Ok(s);
+    }
+    let mut tol = tol.min((traction_tol / TRACTION_PER_C).max(TIGHTEST));
+    loop {
+        let s = panels(k, tol)?;
+        let e = s.traction_error();
+        if e <= traction_tol {
+            return Ok(s);
+        }
+        if tol <= TIGHTEST {
+            return Err(Error::ToleranceNotMet {
+                estimate: e,
+                tolerance: traction_tol,
+                detail: format!("coupled: traction error at tolerance {tol:.0e} in c"),
+            });
+        }
+        tol = (0.5 * tol * traction_tol / e).min(0.1 * tol).max(TIGHTEST);
+    }
+}
+
+/// The closed-form regimes, where they meet the tolerances: mu = 0 (p = p0, q = 0), bp = 0
+/// (Goodman's closed form is exact), a stick zone below the tolerance ([`full_slip`]) and
+/// slip zones below it ([`near_bonded`]).
+fn limit_regime(k: &Coupling, tol: f64, traction_tol: f64) -> Option<CoupledSolution> {
     if k.mu == 0.0 {
-        return Ok(CoupledSolution {
+        return Some(CoupledSolution {
             coupling: *k,
             edge: StickEdge::from_c(0.0),
             error: 0.0,
             traction_error: 0.0,
             delta: 1.0,
-            discrete: None,
+            regime: Regime::Frictionless,
             order: 0,
         });
     }
+    if k.bp == 0.0 {
+        let g = crate::goodman::solve(k).ok()?;
+        return Some(CoupledSolution::from_profile(g, Regime::Uncoupled));
+    }
+    let meets = |p: &dyn Profile| p.numerical_error() <= tol && p.traction_error() <= traction_tol;
+    let fs = FullSlip::new(k);
+    if meets(&fs) {
+        return Some(CoupledSolution::from_profile(fs, Regime::FullSlip));
+    }
+    let nb = NearBonded::new(k);
+    (nb.covered() && meets(&nb)).then(|| CoupledSolution::from_profile(nb, Regime::NearBonded))
+}
+
+/// The panel discretisation of (E1)-(E4) for `k` (mu > 0) to |c - c_exact| <= tol.
+fn panels(k: &Coupling, tol: f64) -> Result<CoupledSolution> {
     let (r, delta) = if k.bp > 0.0 { k.reduced() } else { (*k, 1.0) };
     let consts = Constants {
         bp: r.bp,
@@ -496,19 +651,68 @@ pub fn solve(k: &Coupling, tol: f64) -> Result<CoupledSolution> {
     } else {
         system::OVERSAMPLE
     };
-    // the first root at the scan order (cheap), its slope, then the orders in turn
-    let fams = Families::new(consts.g, SCAN_ORDER);
-    let mut level = Level::new(consts, SCAN_ORDER, &fams, SCAN_XTOL, oversample);
-    let lc = level.first_root(goodman_guess(r.bq, r.mu))?;
-    let mut root = Root {
-        lc,
-        unc: level.xtol,
-        slope: level.slope(lc),
-        step: 1.0,
-        discrete: level.discrete_at(lc)?,
+    // the first root (where the near-bonded law predicts thin slip zones inside its window,
+    // else scanned from below at the cheap order, then at the robust one), its slope, then
+    // the orders in turn
+    let window = near_bonded::ln_w_range(r.bp, r.mu)
+        .filter(|&(_, hi)| r.bp > 0.0 && hi < WINDOW_BELOW.ln())
+        .map(|(lo, hi)| Start::Window(-hi - WINDOW_MARGIN, -lo + WINDOW_MARGIN));
+    let lc0 = goodman_guess(r.bq, r.mu);
+    let scans = SCAN_ORDERS.map(|order| Start::Scan(lc0, order));
+    let starts: Vec<Start> = match window {
+        Some(Start::Window(lo, hi)) if 0.5 * (lo + hi) > T_MAX - WINDOW_MARGIN - 1.0 => {
+            return Err(Error::NoConvergence(format!(
+                "the slip zones (1 - c ~ {:.0e} by the near-bonded law) are too thin for the \
+                 panels (1 - c above about {:.0e}), and the bonded limit's bounds miss the \
+                 tolerances",
+                edge_of(0.5 * (lo + hi)).1,
+                edge_of(T_MAX - WINDOW_MARGIN - 1.0).1
+            )));
+        }
+        Some(w) => vec![w],
+        None => scans.to_vec(),
     };
-    for &n in &ORDERS {
-        let next = root_at_order(consts, n, &root, tol, oversample)?;
+    let mut result = Err(Error::Internal("coupled: no root search tried".into()));
+    for start in starts {
+        result = panels_from(k, tol, consts, delta, oversample, start);
+        if result.is_ok() {
+            break;
+        }
+    }
+    result
+}
+
+/// Where the search for the first root starts.
+#[derive(Clone, Copy, Debug)]
+enum Start {
+    /// Scan from below, from lc0 (or lower) up, at the given order.
+    Scan(f64, usize),
+    /// The sign change inside the window (lo, hi) of lc, at [`WINDOW_ORDER`].
+    Window(f64, f64),
+}
+
+impl Start {
+    /// The order the first root is found at.
+    fn order(self) -> usize {
+        match self {
+            Start::Scan(_, order) => order,
+            Start::Window(..) => WINDOW_ORDER,
+        }
+    }
+}
+
+/// [`panels`] with the first root found from `start`.
+fn panels_from(
+    k: &Coupling,
+    tol: f64,
+    consts: Constants,
+    delta: f64,
+    oversample: f64,
+    start: Start,
+) -> Result<CoupledSolution> {
+    let mut root = first_root(consts, start, oversample)?;
+    for &n in ORDERS.iter().filter(|&&n| n > start.order()) {
+        let next = root_at_order(consts, n, &root, tol, oversample, start)?;
         let (c, w) = edge_of(next.lc);
         let diff = order_difference(&root, &next);
         let gap = traction_gap(&next.discrete, &root.discrete);
@@ -534,11 +738,14 @@ pub fn solve(k: &Coupling, tol: f64) -> Result<CoupledSolution> {
                 error: diff,
                 traction_error: ORDER_SAFETY * (dp + delta * dq),
                 delta,
-                discrete: Some(next.discrete),
+                regime: Regime::Panels(next.discrete),
                 order: n,
             });
         }
-        if n == ORDERS[ORDERS.len() - 1] {
+        // the next order's unknowns grow with the order (the panels stay)
+        let next_n = ORDERS.iter().find(|&&m| m > n);
+        let next_unknowns = next_n.map(|&m| next.discrete.mesh.unknowns * m / n);
+        if next_unknowns.is_none_or(|u| u > MAX_UNKNOWNS) {
             return Err(Error::ToleranceNotMet {
                 estimate: diff,
                 tolerance: tol,
@@ -550,6 +757,21 @@ pub fn solve(k: &Coupling, tol: f64) -> Result<CoupledSolution> {
         root = next;
     }
     Err(Error::Internal("coupled: order loop fell through".into()))
+}
+
+/// The first root from `start`, at its order.
+fn first_root(consts: Constants, start: Start, oversample: f64) -> Result<Root> {
+    let n = start.order();
+    let fams = Families::new(consts.g, n);
+    let mut level = Level::new(consts, n, &fams, SCAN_XTOL, oversample);
+    let lc = level.root_from(start)?;
+    Ok(Root {
+        lc,
+        unc: level.xtol,
+        slope: level.slope(lc),
+        step: 1.0,
+        discrete: level.discrete_at(lc)?,
+    })
 }
 
 /// One order's root: lc = ln(c / (1 - c)), its distance from the order's exact root (unc),
@@ -573,6 +795,7 @@ fn root_at_order(
     prev: &Root,
     tol: f64,
     oversample: f64,
+    start: Start,
 ) -> Result<Root> {
     let (c_prev, w_prev) = edge_of(prev.lc);
     let xtol = (0.05 * tol / (c_prev * w_prev)).clamp(1e-13, 1e-3);
@@ -582,7 +805,7 @@ fn root_at_order(
         Ok(r) => r,
         Err(_) => {
             level = Level::new(consts, n, &fams, xtol, oversample);
-            (level.first_root(prev.lc)?, xtol)
+            (level.root_from(start)?, xtol)
         }
     };
     let discrete = level.discrete_at(lc)?;

@@ -45,7 +45,7 @@ fn graded(lo: f64, hi: f64, points: &[f64]) -> Vec<f64> {
 /// Reference (1/pi) PV int_{-1}^{1} f(t) / (x - t) dt for f ~ (1 -+ t)^(-g) at the ends with
 /// kinks at +-c: singularity subtraction, 20-point Gauss-Legendre on pieces graded towards
 /// +-c and x, 30-point Gauss-Jacobi (weight (1 -+ t)^(-g)) on end pieces of width delta.
-fn hilbert_ref(f: &dyn Fn(f64) -> f64, x: f64, c: f64, w: f64, g: f64) -> f64 {
+pub(crate) fn hilbert_ref(f: &dyn Fn(f64) -> f64, x: f64, c: f64, w: f64, g: f64) -> f64 {
     let fx = f(x);
     let delta = (0.25 * w).min(0.5 * (1.0 - x.abs()));
     let (gl, glw) = gauss_legendre(20);
@@ -81,7 +81,14 @@ fn hilbert_ref(f: &dyn Fn(f64) -> f64, x: f64, c: f64, w: f64, g: f64) -> f64 {
 
 /// Reference int_a^b f for f smooth on [a, b] apart from kinks at the given points and
 /// (1 - t)^(-g) at b = 1.
-fn integral_ref(f: &dyn Fn(f64) -> f64, a: f64, b: f64, kinks: &[f64], g: f64, w: f64) -> f64 {
+pub(crate) fn integral_ref(
+    f: &dyn Fn(f64) -> f64,
+    a: f64,
+    b: f64,
+    kinks: &[f64],
+    g: f64,
+    w: f64,
+) -> f64 {
     let (gl, glw) = gauss_legendre(20);
     let delta = if b == 1.0 { 0.25 * w } else { 0.0 };
     let mut sum = 0.0;
@@ -300,7 +307,11 @@ fn c_at_order(k: Constants, n: usize) -> f64 {
 fn discrete_at_order(k: Constants, n: usize) -> Discrete {
     let fams = Families::new(k.g, n);
     let mut level = Level::new(k, n, &fams, 0.0, system::OVERSAMPLE);
-    let (c, w) = edge_of(level.first_root(goodman_guess(k.bq, k.mu)).unwrap());
+    let (c, w) = edge_of(
+        level
+            .first_root(goodman_guess(k.bq, k.mu), SCAN_ORDERS[0].min(n))
+            .unwrap(),
+    );
     let layout = level.layout.unwrap();
     solve_fixed(k, c, w, n, &fams, &layout, system::OVERSAMPLE).unwrap()
 }

@@ -1,0 +1,302 @@
+//! The near-bonded regime (1 - c -> 0, THEORY.md sections 5 and 8): the bonded punch's
+//! tractions and the size of the slip layer.
+//!
+//! Bonded punch: (E1) and (E2) on the whole contact. In the reduced variables (q = delta q~,
+//! THEORY.md section 4) w = p + i q~ solves H\[w\] = -i b* w, whose solution with int p = 1
+//! and q odd is
+//!   p + i q~ = cosh(pi eps) / (pi sqrt(1 - x^2)) exp(i eps ln((1 + x) / (1 - x))),
+//!   eps = artanh(b*) / pi,
+//! (H of (1 - x)^(-1/2 + i eps) (1 + x)^(-1/2 - i eps) is -i tanh(pi eps) times itself, and
+//! int_{-1}^{1} of it is B(1/2 + i eps, 1/2 - i eps) = pi / cosh(pi eps)): the oscillatory
+//! edge field. It would make p < 0 and |q| > mu p next to the edges, where
+//! eps ln(2 / (1 - x)) reaches about arctan(mu~); the slip layer c < x < 1 opens there, so
+//!   ln((1 - c) / 8) = -kappa arctan(mu~) / eps,
+//! with kappa -> 1 as b* -> 0: at bp = 0, c -> 1, Goodman's equation gives
+//! 1 - c = 8 exp(-pi mu / bq), and arctan(mu~) / eps -> pi mu / bq as b* -> 0. Against COUPLED
+//! (b* = 0.1 .. 0.35, mu~ = 0.5 .. 1000, tests.rs) kappa lies in [0.90, 1.0] and falls with
+//! b* and mu~ (1 - kappa ~ 0.28 b* at large mu~): the law is used with
+//! kappa = 1 - KAPPA_ESTIMATE b* and bounded with kappa >= 1 - KAPPA_BOUND b*. Replacing the
+//! slip layer by the bonded field changes the tractions by O(sqrt(1 - c)) in the norm of
+//! [`crate::problem::traction_distance`] (the layer carries p ~ (1 - c)^(-1/2) over a width
+//! 1 - c; measured up to 1.06 sqrt(1 - c) for b* <= 0.3); the regime is used where its bounds
+//! meet the tolerances.
+
+use std::f64::consts::PI;
+
+use crate::field::{Expand, Expansion, Exponents, sample};
+use crate::problem::{Coupling, Profile, StickEdge};
+
+/// kappa = 1 - KAPPA_ESTIMATE b* for the estimate of 1 - c, 1 - KAPPA_BOUND b* for its bound.
+const KAPPA_ESTIMATE: f64 = 0.25;
+const KAPPA_BOUND: f64 = 0.5;
+
+/// Largest b* of the regime (the law was measured up to b* = 0.35).
+const B_MAX: f64 = 0.3;
+
+/// Bound on the traction error in units of sqrt(1 - c) at the bound of 1 - c.
+const TRACTION_FACTOR: f64 = 3.0;
+
+/// The range (lowest, highest) of ln(1 - c) the law allows for the reduced coupling
+/// (b*, mu~), b* <= B_MAX; None beyond B_MAX.
+pub(crate) fn ln_w_range(b: f64, m: f64) -> Option<(f64, f64)> {
+    (b <= B_MAX).then(|| {
+        let phase = m.atan() * PI / b.atanh();
+        (
+            8f64.ln() - phase,
+            8f64.ln() - (1.0 - KAPPA_BOUND * b) * phase,
+        )
+    })
+}
+
+/// The bonded tractions with the law's slip layer.
+#[derive(Clone, Debug)]
+pub(crate) struct NearBonded {
+    coupling: Coupling,
+    /// q = delta q~.
+    delta: f64,
+    /// Oscillation index eps = artanh(b*) / pi.
+    eps: f64,
+    /// ln of the estimate of 1 - c, and of its upper bound.
+    ln_w: f64,
+    ln_w_bound: f64,
+    /// Whether the law covers b* (b* <= B_MAX).
+    covered: bool,
+}
+
+impl NearBonded {
+    /// The near-bonded solution of `k` (bp > 0, mu > 0).
+    pub(crate) fn new(k: &Coupling) -> Self {
+        let (r, delta) = k.reduced();
+        let (b, eps) = (r.bp, r.bp.atanh() / PI);
+        let phase = r.mu.atan() / eps;
+        NearBonded {
+            coupling: *k,
+            delta,
+            eps,
+            ln_w: 8f64.ln() - (1.0 - KAPPA_ESTIMATE * b) * phase,
+            ln_w_bound: 8f64.ln() - (1.0 - KAPPA_BOUND * b) * phase,
+            covered: b <= B_MAX,
+        }
+    }
+
+    /// Whether the law covers this coupling (b* <= B_MAX).
+    pub(crate) fn covered(&self) -> bool {
+        self.covered
+    }
+}
+
+impl Profile for NearBonded {
+    fn coupling(&self) -> Coupling {
+        self.coupling
+    }
+
+    fn edge(&self) -> StickEdge {
+        StickEdge::from_one_minus_c(self.ln_w.exp())
+    }
+
+    /// 1 - c's bound: the distance of c from 1.
+    fn numerical_error(&self) -> f64 {
+        self.ln_w_bound.exp()
+    }
+
+    fn traction_error(&self) -> f64 {
+        TRACTION_FACTOR * (0.5 * self.ln_w_bound).exp()
+    }
+
+    fn half_line_tractions(&self, x: f64) -> (f64, f64) {
+        let amp = (PI * self.eps).cosh() / (PI * ((1.0 - x) * (1.0 + x)).sqrt());
+        let theta = self.eps * ((1.0 + x) / (1.0 - x)).ln();
+        (amp * theta.cos(), self.delta * amp * theta.sin())
+    }
+}
+
+/// Sampled: p and q carry (1 - x)^(-1/2) times a factor that oscillates ever faster towards
+/// the edge; the slip layer is below the sampling's resolution wherever this regime is used.
+impl Expand for NearBonded {
+    fn expansion(&self) -> Expansion {
+        sample(
+            self,
+            Exponents {
+                edge: 0.5,
+                stick: 0.5,
+            },
+        )
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::coupled::Regime;
+    use crate::numerics::quadrature::gauss_legendre;
+    use crate::problem::traction_distance;
+
+    /// (1/pi) PV int_{-1}^{1} f(t) / (x - t) dt for f ~ (1 -+ t)^(-1/2) times a log-periodic
+    /// factor at the ends, f given as f(t, 1 - |t|) (the distance to the end to full relative
+    /// accuracy): singularity subtraction with Gauss-Legendre on [-1 + d, 1 - d] (graded
+    /// towards x), the end pieces in s = -ln((1 -+ t) / d), where f dt is smooth and decays
+    /// like exp(-s / 2) (composite Gauss-Legendre up to s = 100).
+    fn hilbert_log_ends(f: &dyn Fn(f64, f64) -> f64, x: f64) -> f64 {
+        let (gl, glw) = gauss_legendre(20);
+        let d = 0.5 * (1.0 - x.abs());
+        let fx = f(x, 1.0 - x.abs());
+        let mut cuts = vec![-1.0 + d, 1.0 - d, x];
+        for k in 1..30 {
+            cuts.extend([x - 0.5f64.powi(k), x + 0.5f64.powi(k)]);
+        }
+        cuts.retain(|c| (-1.0 + d..=1.0 - d).contains(c));
+        cuts.sort_by(f64::total_cmp);
+        let mut sum = 0.0;
+        for p in cuts.windows(2) {
+            let (m, h) = (0.5 * (p[0] + p[1]), 0.5 * (p[1] - p[0]));
+            sum += h * gl
+                .iter()
+                .zip(&glw)
+                .map(|(t, v)| {
+                    let y = m + h * t;
+                    v * (f(y, 1.0 - y.abs()) - fx) / (x - y)
+                })
+                .sum::<f64>();
+        }
+        for side in [1.0, -1.0] {
+            for k in 0..10 {
+                let (m, h) = (10.0 * k as f64 + 5.0, 5.0);
+                sum += h * gl
+                    .iter()
+                    .zip(&glw)
+                    .map(|(t, v)| {
+                        let e = d * (-(m + h * t)).exp();
+                        let y = side * (1.0 - e);
+                        v * e * (f(y, e) - fx) / (x - y)
+                    })
+                    .sum::<f64>();
+            }
+        }
+        (sum + fx * ((1.0 + x) / (1.0 - x)).ln()) / PI
+    }
+
+    /// The bonded tractions solve (E1) and (E2) on the whole contact, and int p = 1. The
+    /// tractions are written here in terms of u = 1 - |x| (for the end pieces) and checked
+    /// against the module's at interior points.
+    #[test]
+    fn bonded_solves_e1_and_e2() {
+        for (bp, bq) in [(0.1, 0.1), (0.05, 0.3), (0.4, 0.2)] {
+            let k = Coupling { bp, bq, mu: 10.0 };
+            let nb = NearBonded::new(&k);
+            let w = |t: f64, u: f64| {
+                let amp = (PI * nb.eps).cosh() / (PI * (u * (2.0 - u)).sqrt());
+                let theta = nb.eps * ((2.0 - u) / u).ln() * t.signum();
+                (amp * theta.cos(), nb.delta * amp * theta.sin())
+            };
+            let (p, q) = (|t: f64, u: f64| w(t, u).0, |t: f64, u: f64| w(t, u).1);
+            for i in 0..10 {
+                let x = -0.9 + 1.8 * (i as f64 + 0.37) / 10.0;
+                let u = 1.0 - x.abs();
+                let (px, qx) = nb.tractions(x);
+                assert!((px - p(x, u)).abs() < 1e-14 * px && (qx - q(x, u)).abs() < 1e-14 * px);
+                let (hp, hq) = (hilbert_log_ends(&p, x), hilbert_log_ends(&q, x));
+                let scale = px.abs() + qx.abs();
+                assert!(
+                    (hp - bp * qx).abs() < 1e-10 * scale,
+                    "{k:?} (E1) at {x}: {hp} vs {}",
+                    bp * qx
+                );
+                assert!(
+                    (hq + bq * px).abs() < 1e-10 * scale,
+                    "{k:?} (E2) at {x}: {hq} vs {}",
+                    -bq * px
+                );
+            }
+            // int p = 2 int_0^1 p: [0, 1/2] directly, [1/2, 1] in s = -ln(2 (1 - t))
+            let (gl, glw) = gauss_legendre(20);
+            let mut half = 0.25
+                * gl.iter()
+                    .zip(&glw)
+                    .map(|(t, v)| v * p(0.25 + 0.25 * t, 0.75 - 0.25 * t))
+                    .sum::<f64>();
+            for k in 0..10 {
+                let (m, h) = (10.0 * k as f64 + 5.0, 5.0);
+                half += h * gl
+                    .iter()
+                    .zip(&glw)
+                    .map(|(t, v)| {
+                        let e = 0.5 * (-(m + h * t)).exp();
+                        v * e * p(1.0 - e, e)
+                    })
+                    .sum::<f64>();
+            }
+            assert!(
+                (2.0 * half - 1.0).abs() < 1e-12,
+                "{k:?}: int p = {}",
+                2.0 * half
+            );
+        }
+    }
+
+    /// As b* -> 0 the law tends to Goodman's 1 - c = 8 exp(-pi mu / bq) at bp = 0.
+    #[test]
+    fn law_tends_to_goodman() {
+        for m in [0.002, 0.004] {
+            let b = 1e-4;
+            let nb = NearBonded::new(&Coupling {
+                bp: b,
+                bq: b,
+                mu: m,
+            });
+            let goodman = crate::goodman::stick_edge(b / m).one_minus_c;
+            let r = (nb.ln_w - goodman.ln()).abs();
+            assert!(
+                r < 1e-3 * goodman.ln().abs(),
+                "mu~ {m}: ln w {} vs {}",
+                nb.ln_w,
+                goodman.ln()
+            );
+        }
+    }
+
+    /// Against the panels where both work (1 - c from 5e-14 to 0.03): 1 - c lies inside the
+    /// law's range, the bonded tractions are within their bound, and where COUPLED takes this
+    /// regime (solve_to at the tolerances its bounds meet) the panels' c and tractions agree
+    /// with it within them: the switch is continuous.
+    #[test]
+    fn law_matches_the_panels() {
+        for b in [0.15, 0.2, 0.25, 0.3] {
+            for m in [0.5, 1.0, 2.0, 100.0] {
+                if b == 0.15 && m > 2.0 {
+                    continue; // 1 - c = 2e-13: several seconds of panels
+                }
+                let k = Coupling {
+                    bp: b,
+                    bq: b,
+                    mu: m,
+                };
+                let nb = NearBonded::new(&k);
+                let s = crate::coupled::panels(&k, 1e-10).unwrap();
+                let w = s.edge().one_minus_c;
+                let (lo, hi) = ln_w_range(b, m).unwrap();
+                assert!(
+                    lo < w.ln() && w.ln() < hi,
+                    "b {b} m {m}: ln w {} outside ({lo}, {hi})",
+                    w.ln()
+                );
+                assert!(s.edge().distance(nb.edge()) <= nb.numerical_error());
+                let d = traction_distance(&s, &nb);
+                assert!(
+                    d <= nb.traction_error(),
+                    "b {b} m {m}: distance {d:e} > {:e}",
+                    nb.traction_error()
+                );
+                let (tol, ttol) = (nb.numerical_error() * 1.01, nb.traction_error() * 1.01);
+                if tol < 1.0 {
+                    let chosen = crate::coupled::solve_to(&k, tol, ttol).unwrap();
+                    assert!(
+                        matches!(chosen.regime, Regime::NearBonded(_)),
+                        "b {b} m {m}"
+                    );
+                    assert!(chosen.edge().distance(s.edge()) <= tol);
+                    assert!(traction_distance(&chosen, &s) <= ttol);
+                }
+            }
+        }
+    }
+}
