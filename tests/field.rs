@@ -712,3 +712,56 @@ fn surface_sxx_matches_quadrature() {
         }
     }
 }
+
+/// COUPLED's closed-form limit regimes have fields too: a stick zone far below the tolerance
+/// (the ply at mu = 0.02: c ~ 3e-23, full slip with the central singularity |x|^(2g-1)) and
+/// slip zones far below it (b* = 0.05 at mu = 10: 1 - c ~ 1e-40, the bonded punch). The
+/// resultant on a line is the punch load and the surface values are the tractions.
+#[test]
+fn limit_regimes_have_fields() {
+    let ply = Material::plane_stress(181e9, 10.3e9, 7.17e9, 0.28).unwrap();
+    let low = Material::effective(1.0, 0.9, 1.0, 1.0).unwrap();
+    for (name, m, mu, c_below, w_below) in [
+        ("full slip", ply, 0.02, 1e-20, 1.0),
+        ("bonded", low, 10.0, 1.0, 1e-30),
+    ] {
+        let s = solve(m, mu, Method::Coupled);
+        assert!(
+            s.c() <= c_below && s.one_minus_c() <= w_below,
+            "{name}: c = {}",
+            s.c()
+        );
+        let (mut fx, mut fy) = (0.0, 0.0);
+        for i in 0..400 {
+            let a = -2.0 + i as f64 / 100.0;
+            for (x, w) in gauss(a, a + 0.01) {
+                let st = stress(&s, x, -0.5);
+                fx += st[2] * w;
+                fy += st[1] * w;
+            }
+        }
+        for i in 0..20 {
+            let a = i as f64 / 20.0;
+            for (t, w) in gauss(a, a + 0.05) {
+                let (x, dx) = (2.0 / t, 2.0 / (t * t));
+                for x in [x, -x] {
+                    let st = stress(&s, x, -0.5);
+                    fx += st[2] * w * dx;
+                    fy += st[1] * w * dx;
+                }
+            }
+        }
+        assert!(
+            (fy + 1.0).abs() < 1e-9 && fx.abs() < 1e-9,
+            "{name}: resultant ({fx:e}, {fy})"
+        );
+        for x in [0.3, 0.7, -0.9, 0.99] {
+            let (p, q) = s.tractions(x);
+            let st = stress(&s, x, 0.0);
+            assert!(
+                (st[1] + p).abs() < 1e-9 * p && (st[2] - q).abs() < 1e-9 * p,
+                "{name} x {x}: {st:?} vs p {p}, q {q}"
+            );
+        }
+    }
+}

@@ -23,7 +23,8 @@
 
 use std::f64::consts::PI;
 
-use crate::field::{Expand, Expansion, Exponents, sample};
+use crate::field::{Expand, Expansion, Family, Panel, fit};
+use crate::numerics::cauchy::Weight;
 use crate::problem::{Coupling, Profile, StickEdge};
 
 /// kappa = 1 - KAPPA_ESTIMATE b* for the estimate of 1 - c, 1 - KAPPA_BOUND b* for its bound.
@@ -32,6 +33,9 @@ const KAPPA_BOUND: f64 = 0.5;
 
 /// Largest b* of the regime (the law was measured up to b* = 0.35).
 const B_MAX: f64 = 0.3;
+
+/// Width of the last panel of the expansion, at the punch edge.
+const EDGE_PANEL: f64 = 1e-15;
 
 /// Bound on the traction error in units of sqrt(1 - c) at the bound of 1 - c.
 const TRACTION_FACTOR: f64 = 3.0;
@@ -79,6 +83,13 @@ impl NearBonded {
         }
     }
 
+    /// (p, q) at x = 1 - u, 0 < u <= 1 (u to full relative accuracy next to the edge).
+    fn at(&self, u: f64) -> (f64, f64) {
+        let amp = (PI * self.eps).cosh() / (PI * (u * (2.0 - u)).sqrt());
+        let theta = self.eps * ((2.0 - u) / u).ln();
+        (amp * theta.cos(), self.delta * amp * theta.sin())
+    }
+
     /// Whether the law covers this coupling (b* <= B_MAX).
     pub(crate) fn covered(&self) -> bool {
         self.covered
@@ -104,23 +115,55 @@ impl Profile for NearBonded {
     }
 
     fn half_line_tractions(&self, x: f64) -> (f64, f64) {
-        let amp = (PI * self.eps).cosh() / (PI * ((1.0 - x) * (1.0 + x)).sqrt());
-        let theta = self.eps * ((1.0 + x) / (1.0 - x)).ln();
-        (amp * theta.cos(), self.delta * amp * theta.sin())
+        self.at(1.0 - x)
     }
 }
 
-/// Sampled: p and q carry (1 - x)^(-1/2) times a factor that oscillates ever faster towards
-/// the edge; the slip layer is below the sampling's resolution wherever this regime is used.
+/// Panels graded towards the punch edge by factors of 4 (on each, the log-periodic factor
+/// exp(i eps ln((1 + x) / (1 - x))) is analytic at its own scale), plain Legendre fits, and a
+/// last panel [1 - EDGE_PANEL, 1] weighted (1 - x)^(-1/2): what its fit misses of the
+/// oscillation is O(sqrt(EDGE_PANEL)) = 1e-8 of the load times the fit's error. The slip
+/// layer is below the resolution of doubles wherever this regime is used.
 impl Expand for NearBonded {
     fn expansion(&self) -> Expansion {
-        sample(
-            self,
-            Exponents {
-                edge: 0.5,
-                stick: 0.5,
-            },
-        )
+        // p / w and q / w on [a, b] from u = 1 - x = (1 - b) + h (1 - t)
+        let fit_on = |a: f64, b: f64, w: &dyn Fn(f64) -> f64| {
+            let h = 0.5 * (b - a);
+            let at = |t: f64| {
+                let u = (1.0 - b) + h * (1.0 - t);
+                let (p, q) = self.at(u);
+                (p / w(u), q / w(u))
+            };
+            (fit(|t| at(t).0), fit(|t| at(t).1))
+        };
+        let mut panels = Vec::new();
+        let (mut a, mut u) = (0.0, 0.5);
+        while u > EDGE_PANEL {
+            let b = 1.0 - u;
+            let (p, q) = fit_on(a, b, &|_| 1.0);
+            panels.push(Panel {
+                a,
+                b,
+                families: vec![Family {
+                    weight: Weight::One,
+                    p,
+                    q,
+                }],
+            });
+            (a, u) = (b, 0.25 * u);
+        }
+        let h = 0.5 * (1.0 - a);
+        let (p, q) = fit_on(a, 1.0, &|u| (u / h).powf(-0.5));
+        panels.push(Panel {
+            a,
+            b: 1.0,
+            families: vec![Family {
+                weight: Weight::Right(-0.5),
+                p,
+                q,
+            }],
+        });
+        Expansion { panels }
     }
 }
 
