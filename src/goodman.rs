@@ -52,6 +52,9 @@ pub(crate) fn stick_edge(ratio: f64) -> StickEdge {
     }
 }
 
+/// Below this c^2 the stick-zone shear is taken linear ([`GoodmanSolution::q_stick`]).
+const C2_MIN: f64 = 1e-300;
+
 /// Goodman's solution for one coupling (bp is ignored by the model).
 #[derive(Clone, Debug)]
 pub struct GoodmanSolution {
@@ -111,6 +114,12 @@ impl GoodmanSolution {
         let d2 = (self.edge.c - x) * (self.edge.c + x);
         let w = (1.0 - x) * (1.0 + x);
         let k = &self.coupling;
+        if self.c2 < C2_MIN {
+            // c < 1e-150: c^2 and c^2 - x^2 leave the normal doubles and RJ fails; on a stick
+            // zone this narrow q rises from 0 to mu p, taken linear (what it changes in any
+            // integral of q is below mu c)
+            return k.mu * p0(x) * x / self.edge.c;
+        }
         if self.k2 < f64::MIN_POSITIVE {
             return 2.0 * k.bq / (PI * PI) * d2.sqrt() * x.atanh() / w;
         }
@@ -191,6 +200,30 @@ mod tests {
             let c = c_by_bisection(ratio);
             assert!((e.c - c).abs() < 4e-15, "ratio {ratio}: {} vs {c}", e.c);
             assert!((e.one_minus_c - (1.0 - c)).abs() < 4e-15);
+        }
+    }
+
+    /// A stick zone so narrow that c^2 leaves the normal doubles (c ~ 1e-153; the nome
+    /// exp(-pi ratio) itself underflows beyond ratio ~ 226) keeps q finite with |q| <= mu p;
+    /// just above C2_MIN (c ~ 1e-136) the elliptic form still holds it.
+    #[test]
+    fn tiny_stick_zones_keep_finite_shear() {
+        for ratio in [200.0, 225.0] {
+            let k = Coupling {
+                bp: 0.0,
+                bq: 0.3,
+                mu: 0.3 / ratio,
+            };
+            let s = solve(&k).unwrap();
+            let c = s.edge().c;
+            assert!(c > 0.0 && c < 1e-130, "ratio {ratio}: c = {c}");
+            for x in [0.0, 0.5 * c, c * (1.0 - 1e-9)] {
+                let (p, q) = s.half_line_tractions(x);
+                assert!(
+                    q.is_finite() && q.abs() <= k.mu * p * (1.0 + 1e-12),
+                    "x {x}: p {p}, q {q}"
+                );
+            }
         }
     }
 

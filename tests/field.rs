@@ -43,10 +43,8 @@ fn solve(m: Material, mu: f64, method: Method) -> Solution {
     c.solve().unwrap()
 }
 
-/// A solve at mu = 0.3 to 1e-12: COUPLED's `tractions` include its wrong-c modes
-/// |x - c|^(g - 1), left out of the field (the exact solution has none); at depth 1e-6 below c
-/// their field is ~1e-8 at the default tolerance, so the comparisons with quadratures of
-/// `tractions` solve it tightly enough for them to vanish.
+/// A solve at mu = 0.3 with c to 1e-12, so that the comparisons with quadratures of
+/// `tractions` at depth 1e-6 below c see no error of the stick edge.
 fn solve_tight(m: Material, method: Method) -> Solution {
     let mut contact = Contact::new(m);
     contact.set_friction(0.3).unwrap();
@@ -190,10 +188,8 @@ fn surface_limits() {
             let s = solve(m, 0.3, method);
             let c = s.c();
             for x in [0.0, 0.3 * c, 0.9 * c, c, 0.5 * (1.0 + c), 0.99, -0.7, 1.2] {
-                // COUPLED's `tractions` include its wrong-c modes |x - c|^(g - 1), whose
-                // coefficient is the residual of its root for c (~1e-11 relative here): the
-                // field's expansion leaves them out (the exact solution has none), so its
-                // surface values differ from `tractions` by that much on the panels at c
+                // COUPLED's field and tractions are the same series; the field's surface
+                // values are limits of its Cauchy transforms (rounding ~1e-10 on the panels at c)
                 let coupled = method == Method::Coupled;
                 // at c the reference is the limit from the stick side, where p is smooth, and
                 // q = mu p there; COUPLED's one-sided limits differ by its discretisation error

@@ -1,11 +1,11 @@
 //! COUPLED's tractions as the field's [`Expansion`], from its own panels: each panel's blocks
 //! are weighted Legendre families already (the weights carry (1 - x)^(-g), (x - c)^g,
 //! (c - x)^g). The wrong-c modes are left out: their coefficient vanishes at the physical c
-//! (it is the root function), and `tractions` leaves them out at c too. The central panel,
+//! (it is the root function), and `tractions` leaves them out too. The central panel,
 //! whose series are in Y = 2 x^2 / l^2 - 1, is resampled as a plain panel on [0, l] (p and
 //! q / x are polynomials in x^2, so the fit is exact). q = delta q~.
 
-use super::mesh::{Basis, Pt};
+use super::mesh::Pt;
 use super::{CoupledSolution, Discrete, Regime};
 use crate::field::{Expand, Expansion, Exponents, Family, Panel, fit, sample};
 
@@ -67,8 +67,7 @@ fn from_discrete(d: &Discrete, delta: f64) -> Expansion {
                 p_blocks.push((block.basis, &d.coef[col..col + block.count]));
                 col += block.count;
             }
-            let keep = |b: Basis| !matches!(b, Basis::StickWrongC | Basis::SlipWrongC);
-            for &(basis, coef) in p_blocks.iter().filter(|(b, _)| keep(*b)) {
+            for &(basis, coef) in p_blocks.iter().filter(|(b, _)| !b.is_wrong_c()) {
                 add(&mut families, basis.weight(g), coef, 1.0, false);
                 if !panel.stick {
                     add(&mut families, basis.weight(g), coef, delta * d.k.mu, true);
@@ -78,7 +77,7 @@ fn from_discrete(d: &Discrete, delta: f64) -> Expansion {
             for block in &panel.q {
                 let coef = &d.coef[col..col + block.count];
                 col += block.count;
-                if keep(block.basis) {
+                if !block.basis.is_wrong_c() {
                     add(&mut families, block.basis.weight(g), coef, delta, true);
                 }
             }

@@ -89,6 +89,11 @@ impl Basis {
         Basis::CentralQ,
     ];
 
+    /// A wrong-c mode (|x - c|^(g-1)): in the system, absent from the solution.
+    pub(crate) fn is_wrong_c(self) -> bool {
+        matches!(self, Basis::StickWrongC | Basis::SlipWrongC)
+    }
+
     /// The endpoint weight on the local coordinate t in [-1, 1] for edge exponent g.
     pub(crate) fn weight(self, g: f64) -> Weight {
         match self {

@@ -139,7 +139,7 @@ pub struct CoupledSolution {
     error: f64,
     /// Estimate of the traction error ([`crate::problem::traction_distance`] from the exact
     /// tractions): for the panels [`ORDER_SAFETY`] times the distance between the tractions
-    /// of the last two orders.
+    /// of the last two orders, plus the norm of the wrong-c modes the tractions leave out.
     traction_error: f64,
     /// q = delta q~ (1 when bp = 0).
     delta: f64,
@@ -736,7 +736,8 @@ fn panels_from(
                 coupling: *k,
                 edge,
                 error: diff,
-                traction_error: ORDER_SAFETY * (dp + delta * dq),
+                traction_error: ORDER_SAFETY * (dp + delta * dq)
+                    + next.discrete.wrong_c_norm(delta),
                 delta,
                 regime: Regime::Panels(next.discrete),
                 order: n,

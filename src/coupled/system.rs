@@ -327,20 +327,50 @@ pub(crate) fn solve_fixed(
 }
 
 impl Discrete {
-    /// sum over `blocks` of weight * Legendre series (wrong-c modes left out exactly at c,
-    /// where their weight is infinite; elsewhere they are O(discretisation error)).
+    /// sum over `blocks` of weight * Legendre series, the wrong-c modes left out: the exact
+    /// solution has none (their coefficient is the defect, zero at the physical c), and near
+    /// c their weight |x - c|^(g-1) would turn the root's residual into a spurious
+    /// singularity (|q| > mu p and p < 0 within 1e-6 of c at large friction, measured).
     fn series(&self, blocks: &[Block], offset: usize, t: f64, omt: f64, opt: f64) -> f64 {
         let mut s = 0.0;
         let mut col = offset;
         for b in blocks {
             let coef = &self.coef[col..col + b.count];
             col += b.count;
-            let w = b.basis.weight(self.k.g).at(omt, opt);
-            if w.is_finite() {
-                s += w * legendre_sum(coef, t);
+            if !b.basis.is_wrong_c() {
+                s += b.basis.weight(self.k.g).at(omt, opt) * legendre_sum(coef, t);
             }
         }
         s
+    }
+
+    /// The norm ([`crate::problem::traction_distance`], over -1 < x < 1) of the wrong-c modes
+    /// that [`Discrete::eval`] leaves out, with q = delta q~: on a panel of half-width h the
+    /// mode c0 (1 -+ t)^(g-1) has int |.| dx = |c0| h 2^g / g; on the slip panel it is p's
+    /// and mu times it q's.
+    pub(crate) fn wrong_c_norm(&self, delta: f64) -> f64 {
+        let g = self.k.g;
+        // sum of |c0| h over the modes among `blocks`, whose coefficients start at `col`
+        let modes = |blocks: &[Block], mut col: usize, h: f64| {
+            let mut sum = 0.0;
+            for b in blocks {
+                if b.basis.is_wrong_c() {
+                    sum += self.coef[col].abs() * h;
+                }
+                col += b.count;
+            }
+            sum
+        };
+        let sum: f64 = self
+            .mesh
+            .panels
+            .iter()
+            .map(|panel| {
+                (1.0 + delta * self.k.mu) * modes(&panel.p, panel.p_offset, panel.h)
+                    + delta * modes(&panel.q, panel.q_offset, panel.h)
+            })
+            .sum();
+        2.0 * sum * 2f64.powf(g) / g
     }
 
     /// (p, q) at 0 <= x < 1 given as a [`Pt`].

@@ -10,10 +10,10 @@ pub const LOG10_MU: [f64; 16] = [-1.0, -0.8, -0.6, -0.4, -0.2, 0.0, 0.2, 0.4, 0.
 
 /// Model error of GOODMAN in c.
 pub(super) const GOODMAN: [[f64; 16]; 19] = [
-    [4.3e-4, 3.8e-5, 4.6e-7, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY],
-    [6.5e-3, 3.6e-3, 6.6e-4, 2.8e-5, 1.7e-7, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY],
-    [1.2e-2, 1.5e-2, 7.2e-3, 1.3e-3, 5.6e-5, 7.0e-7, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY],
-    [1.3e-2, 2.5e-2, 2.3e-2, 8.0e-3, 1.0e-3, 4.5e-5, 1.6e-6, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, 9.7e-10, 9.3e-10],
+    [4.3e-4, 3.8e-5, 4.6e-7, 2.7e-10, f64::INFINITY, f64::INFINITY, 5.9e-27, 6.5e-32, 1.8e-35, 7.0e-38, 2.0e-39, 2.1e-40, 4.9e-41, 2.0e-41, 1.1e-41, 7.6e-42],
+    [6.5e-3, 3.6e-3, 6.6e-4, 2.8e-5, 1.7e-7, 1.8e-10, 1.8e-13, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY],
+    [1.2e-2, 1.5e-2, 7.2e-3, 1.3e-3, 5.6e-5, 7.0e-7, 7.3e-9, 1.8e-10, 1.3e-11, 2.3e-12, 8.3e-13, 4.7e-13, 3.4e-13, 2.8e-13, 2.6e-13, 2.4e-13],
+    [1.3e-2, 2.5e-2, 2.3e-2, 8.0e-3, 1.0e-3, 4.5e-5, 1.6e-6, 1.1e-7, 1.5e-8, 4.5e-9, 2.3e-9, 1.6e-9, 1.2e-9, 1.1e-9, 9.7e-10, 9.3e-10],
     [1.1e-2, 3.1e-2, 4.2e-2, 2.5e-2, 5.7e-3, 5.6e-4, 4.1e-5, 4.9e-6, 1.2e-6, 4.6e-7, 2.7e-7, 2.0e-7, 1.7e-7, 1.6e-7, 1.5e-7, 1.4e-7],
     [7.8e-3, 3.1e-2, 5.9e-2, 5.1e-2, 1.9e-2, 3.1e-3, 3.8e-4, 6.7e-5, 2.1e-5, 1.1e-5, 6.8e-6, 5.4e-6, 4.7e-6, 4.3e-6, 4.1e-6, 4.0e-6],
     [5.3e-3, 2.9e-2, 7.1e-2, 8.2e-2, 4.2e-2, 1.1e-2, 1.9e-3, 4.5e-4, 1.8e-4, 9.7e-5, 7.0e-5, 5.7e-5, 5.1e-5, 4.8e-5, 4.6e-5, 4.5e-5],
@@ -27,16 +27,16 @@ pub(super) const GOODMAN: [[f64; 16]; 19] = [
     [3.1e-5, 2.4e-3, 3.4e-2, 1.7e-1, 4.0e-1, 5.0e-1, 4.0e-1, 3.0e-1, 2.3e-1, 2.0e-1, 1.8e-1, 1.7e-1, 1.7e-1, 1.6e-1, 1.6e-1, 1.6e-1],
     [1.4e-5, 1.5e-3, 2.6e-2, 1.6e-1, 4.1e-1, 5.8e-1, 5.3e-1, 4.2e-1, 3.5e-1, 3.1e-1, 2.9e-1, 2.7e-1, 2.7e-1, 2.6e-1, 2.6e-1, 2.6e-1],
     [6.4e-6, 8.8e-4, 2.0e-2, 1.4e-1, 4.1e-1, 6.5e-1, 6.6e-1, 5.7e-1, 5.0e-1, 4.5e-1, 4.3e-1, 4.1e-1, 4.0e-1, 4.0e-1, 3.9e-1, 3.9e-1],
-    [2.9e-6, 5.4e-4, 1.5e-2, 1.2e-1, 3.9e-1, 7.0e-1, 7.9e-1, 7.3e-1, 6.7e-1, 6.2e-1, 6.0e-1, 5.8e-1, 5.7e-1, 5.7e-1, 5.6e-1, f64::INFINITY],
-    [1.4e-6, 3.3e-4, 1.1e-2, 9.4e-2, 3.6e-1, 7.3e-1, 9.0e-1, 8.8e-1, 8.5e-1, 8.2e-1, 8.0e-1, 7.9e-1, 7.8e-1, 7.8e-1, 7.7e-1, f64::INFINITY],
+    [2.9e-6, 5.4e-4, 1.5e-2, 1.2e-1, 3.9e-1, 7.0e-1, 7.9e-1, 7.3e-1, 6.7e-1, 6.2e-1, 6.0e-1, 5.8e-1, 5.7e-1, 5.7e-1, 5.6e-1, 5.6e-1],
+    [1.4e-6, 3.3e-4, 1.1e-2, 9.4e-2, 3.6e-1, 7.3e-1, 9.0e-1, 8.8e-1, 8.5e-1, 8.2e-1, 8.0e-1, 7.9e-1, 7.8e-1, 7.8e-1, 7.7e-1, 7.7e-1],
 ];
 
 /// Model error of SPENCE in c.
 pub(super) const SPENCE: [[f64; 16]; 19] = [
-    [3.8e-5, 1.2e-5, 2.4e-7, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY],
-    [2.7e-3, 2.6e-4, 1.5e-4, 1.5e-5, 2.7e-7, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY],
-    [7.8e-3, 5.5e-3, 3.7e-4, 3.2e-4, 4.5e-5, 2.9e-6, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY],
-    [9.7e-3, 1.5e-2, 6.2e-3, 3.5e-4, 4.5e-4, 8.6e-5, 2.1e-5, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, 7.4e-6, 3.5e-6],
+    [3.8e-5, 1.2e-5, 2.4e-7, 2.8e-10, f64::INFINITY, f64::INFINITY, 1.8e-21, 1.6e-21, 2.0e-19, 2.4e-16, 2.4e-13, 5.7e-11, 2.2e-9, 1.6e-8, 3.8e-8, 4.5e-8],
+    [2.7e-3, 2.6e-4, 1.5e-4, 1.5e-5, 2.7e-7, 2.5e-9, 1.1e-10, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY],
+    [7.8e-3, 5.5e-3, 3.7e-4, 3.2e-4, 4.5e-5, 2.9e-6, 3.7e-7, 2.6e-7, 6.5e-7, 2.4e-6, 6.0e-6, 8.8e-6, 8.3e-6, 5.8e-6, 3.4e-6, 1.7e-6],
+    [9.7e-3, 1.5e-2, 6.2e-3, 3.5e-4, 4.5e-4, 8.6e-5, 2.1e-5, 1.4e-5, 2.0e-5, 3.2e-5, 4.1e-5, 3.7e-5, 2.6e-5, 1.5e-5, 7.4e-6, 3.5e-6],
     [8.9e-3, 2.2e-2, 1.9e-2, 3.4e-3, 1.1e-3, 5.6e-4, 2.1e-4, 1.4e-4, 1.4e-4, 1.5e-4, 1.3e-4, 9.0e-5, 5.3e-5, 2.8e-5, 1.3e-5, 5.8e-6],
     [7.0e-3, 2.4e-2, 3.4e-2, 1.5e-2, 2.0e-5, 1.5e-3, 8.5e-4, 5.7e-4, 4.8e-4, 4.0e-4, 2.8e-4, 1.7e-4, 8.7e-5, 4.1e-5, 1.7e-5, 5.1e-6],
     [4.9e-3, 2.4e-2, 4.6e-2, 3.4e-2, 6.4e-3, 1.9e-3, 2.0e-3, 1.5e-3, 1.1e-3, 7.5e-4, 4.5e-4, 2.3e-4, 9.0e-5, 1.9e-5, 1.7e-5, 3.2e-5],
@@ -50,16 +50,16 @@ pub(super) const SPENCE: [[f64; 16]; 19] = [
     [2.9e-5, 2.2e-3, 2.9e-2, 1.3e-1, 2.7e-1, 3.3e-1, 2.9e-1, 2.4e-1, 2.1e-1, 1.9e-1, 1.8e-1, 1.7e-1, 1.7e-1, 1.6e-1, 1.6e-1, 1.6e-1],
     [1.4e-5, 1.4e-3, 2.3e-2, 1.2e-1, 2.9e-1, 4.0e-1, 3.9e-1, 3.5e-1, 3.2e-1, 3.0e-1, 2.8e-1, 2.7e-1, 2.7e-1, 2.6e-1, 2.6e-1, 2.6e-1],
     [6.0e-6, 8.0e-4, 1.7e-2, 1.1e-1, 2.9e-1, 4.6e-1, 5.1e-1, 4.9e-1, 4.6e-1, 4.4e-1, 4.2e-1, 4.1e-1, 4.0e-1, 4.0e-1, 3.9e-1, 3.9e-1],
-    [2.8e-6, 4.9e-4, 1.3e-2, 9.0e-2, 2.9e-1, 5.0e-1, 6.1e-1, 6.4e-1, 6.2e-1, 6.1e-1, 5.9e-1, 5.8e-1, 5.7e-1, 5.7e-1, 5.6e-1, f64::INFINITY],
-    [1.3e-6, 3.0e-4, 9.0e-3, 7.5e-2, 2.7e-1, 5.2e-1, 7.0e-1, 7.8e-1, 8.0e-1, 8.0e-1, 7.9e-1, 7.8e-1, 7.8e-1, 7.7e-1, 7.7e-1, f64::INFINITY],
+    [2.8e-6, 4.9e-4, 1.3e-2, 9.0e-2, 2.9e-1, 5.0e-1, 6.1e-1, 6.4e-1, 6.2e-1, 6.1e-1, 5.9e-1, 5.8e-1, 5.7e-1, 5.7e-1, 5.6e-1, 5.6e-1],
+    [1.3e-6, 3.0e-4, 9.0e-3, 7.5e-2, 2.7e-1, 5.2e-1, 7.0e-1, 7.8e-1, 8.0e-1, 8.0e-1, 7.9e-1, 7.8e-1, 7.8e-1, 7.7e-1, 7.7e-1, 7.7e-1],
 ];
 
 /// Model error of GOODMAN in the tractions.
 pub(super) const GOODMAN_TRACTIONS: [[f64; 16]; 19] = [
-    [1.5e-3, 1.4e-3, 1.4e-3, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY],
-    [6.2e-3, 6.3e-3, 5.7e-3, 5.6e-3, 5.6e-3, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY],
-    [1.1e-2, 1.5e-2, 1.4e-2, 1.3e-2, 1.3e-2, 1.3e-2, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY],
-    [1.5e-2, 2.2e-2, 2.7e-2, 2.4e-2, 2.3e-2, 2.3e-2, 2.3e-2, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, 2.3e-2, 2.3e-2],
+    [1.5e-3, 1.4e-3, 1.4e-3, 1.4e-3, f64::INFINITY, f64::INFINITY, 1.4e-3, 1.4e-3, 1.4e-3, 1.4e-3, 1.4e-3, 1.4e-3, 1.4e-3, 1.4e-3, 1.4e-3, 1.4e-3],
+    [6.2e-3, 6.3e-3, 5.7e-3, 5.6e-3, 5.6e-3, 5.6e-3, 5.6e-3, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY],
+    [1.1e-2, 1.5e-2, 1.4e-2, 1.3e-2, 1.3e-2, 1.3e-2, 1.3e-2, 1.3e-2, 1.3e-2, 1.3e-2, 1.3e-2, 1.3e-2, 1.3e-2, 1.3e-2, 1.3e-2, 1.3e-2],
+    [1.5e-2, 2.2e-2, 2.7e-2, 2.4e-2, 2.3e-2, 2.3e-2, 2.3e-2, 2.3e-2, 2.3e-2, 2.3e-2, 2.3e-2, 2.3e-2, 2.3e-2, 2.3e-2, 2.3e-2, 2.3e-2],
     [1.9e-2, 2.9e-2, 4.0e-2, 4.2e-2, 3.7e-2, 3.6e-2, 3.6e-2, 3.6e-2, 3.6e-2, 3.6e-2, 3.6e-2, 3.6e-2, 3.6e-2, 3.6e-2, 3.6e-2, 3.6e-2],
     [2.3e-2, 3.6e-2, 5.2e-2, 6.3e-2, 5.7e-2, 5.4e-2, 5.3e-2, 5.3e-2, 5.3e-2, 5.3e-2, 5.3e-2, 5.3e-2, 5.3e-2, 5.3e-2, 5.3e-2, 5.3e-2],
     [2.6e-2, 4.2e-2, 6.3e-2, 8.4e-2, 8.5e-2, 7.7e-2, 7.4e-2, 7.4e-2, 7.3e-2, 7.3e-2, 7.3e-2, 7.3e-2, 7.3e-2, 7.3e-2, 7.3e-2, 7.3e-2],
@@ -73,16 +73,16 @@ pub(super) const GOODMAN_TRACTIONS: [[f64; 16]; 19] = [
     [5.6e-2, 8.9e-2, 1.4e-1, 2.2e-1, 3.4e-1, 4.8e-1, 5.9e-1, 6.7e-1, 7.0e-1, 7.1e-1, 7.1e-1, 7.2e-1, 7.2e-1, 7.2e-1, 7.2e-1, 7.2e-1],
     [6.0e-2, 9.4e-2, 1.5e-1, 2.4e-1, 3.6e-1, 5.5e-1, 6.8e-1, 7.9e-1, 8.5e-1, 8.8e-1, 9.0e-1, 9.1e-1, 9.2e-1, 9.2e-1, 9.2e-1, 9.2e-1],
     [6.4e-2, 1.0e-1, 1.6e-1, 2.5e-1, 3.8e-1, 6.3e-1, 8.1e-1, 9.0e-1, 1.0e0, 1.1e0, 1.1e0, 1.2e0, 1.2e0, 1.2e0, 1.2e0, 1.2e0],
-    [6.7e-2, 1.1e-1, 1.7e-1, 2.6e-1, 4.0e-1, 7.1e-1, 9.6e-1, 1.1e0, 1.2e0, 1.3e0, 1.4e0, 1.4e0, 1.4e0, 1.4e0, 1.4e0, f64::INFINITY],
-    [7.1e-2, 1.2e-1, 1.8e-1, 2.8e-1, 4.2e-1, 7.9e-1, 1.2e0, 1.4e0, 1.5e0, 1.6e0, 1.7e0, 1.7e0, 1.7e0, 1.7e0, 1.7e0, f64::INFINITY],
+    [6.7e-2, 1.1e-1, 1.7e-1, 2.6e-1, 4.0e-1, 7.1e-1, 9.6e-1, 1.1e0, 1.2e0, 1.3e0, 1.4e0, 1.4e0, 1.4e0, 1.4e0, 1.4e0, 1.5e0],
+    [7.1e-2, 1.2e-1, 1.8e-1, 2.8e-1, 4.2e-1, 7.9e-1, 1.2e0, 1.4e0, 1.5e0, 1.6e0, 1.7e0, 1.7e0, 1.7e0, 1.7e0, 1.7e0, 1.7e0],
 ];
 
 /// Model error of SPENCE in the tractions.
 pub(super) const SPENCE_TRACTIONS: [[f64; 16]; 19] = [
-    [7.1e-4, 2.0e-3, 3.9e-3, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY],
-    [2.2e-3, 1.4e-3, 4.9e-3, 1.1e-2, 2.0e-2, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY],
-    [5.6e-3, 4.8e-3, 3.3e-3, 1.2e-2, 2.6e-2, 4.6e-2, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY],
-    [8.2e-3, 1.1e-2, 6.3e-3, 9.7e-3, 2.8e-2, 5.4e-2, 9.2e-2, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, 3.9e-1, 4.0e-1],
+    [7.1e-4, 2.0e-3, 3.9e-3, 6.8e-3, f64::INFINITY, f64::INFINITY, 3.1e-2, 4.8e-2, 7.5e-2, 1.2e-1, 1.7e-1, 2.3e-1, 2.9e-1, 3.3e-1, 3.7e-1, 3.9e-1],
+    [2.2e-3, 1.4e-3, 4.9e-3, 1.1e-2, 2.0e-2, 3.5e-2, 5.6e-2, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY, f64::INFINITY],
+    [5.6e-3, 4.8e-3, 3.3e-3, 1.2e-2, 2.6e-2, 4.6e-2, 7.7e-2, 1.2e-1, 1.8e-1, 2.4e-1, 3.0e-1, 3.4e-1, 3.7e-1, 3.9e-1, 4.0e-1, 4.0e-1],
+    [8.2e-3, 1.1e-2, 6.3e-3, 9.7e-3, 2.8e-2, 5.4e-2, 9.2e-2, 1.5e-1, 2.1e-1, 2.7e-1, 3.2e-1, 3.5e-1, 3.7e-1, 3.8e-1, 3.9e-1, 4.0e-1],
     [1.1e-2, 1.6e-2, 1.6e-2, 8.2e-3, 2.7e-2, 5.9e-2, 1.1e-1, 1.6e-1, 2.2e-1, 2.8e-1, 3.2e-1, 3.5e-1, 3.7e-1, 3.8e-1, 3.8e-1, 3.9e-1],
     [1.3e-2, 2.0e-2, 2.5e-2, 1.6e-2, 2.1e-2, 5.9e-2, 1.1e-1, 1.7e-1, 2.3e-1, 2.8e-1, 3.2e-1, 3.4e-1, 3.6e-1, 3.7e-1, 3.7e-1, 3.7e-1],
     [1.5e-2, 2.4e-2, 3.4e-2, 3.1e-2, 2.0e-2, 5.4e-2, 1.1e-1, 1.7e-1, 2.3e-1, 2.8e-1, 3.1e-1, 3.3e-1, 3.4e-1, 3.5e-1, 3.5e-1, 3.6e-1],
@@ -96,12 +96,12 @@ pub(super) const SPENCE_TRACTIONS: [[f64; 16]; 19] = [
     [3.2e-2, 5.2e-2, 8.5e-2, 1.4e-1, 2.3e-1, 3.2e-1, 3.8e-1, 4.0e-1, 3.9e-1, 3.9e-1, 3.8e-1, 3.8e-1, 3.8e-1, 3.8e-1, 3.8e-1, 3.8e-1],
     [3.5e-2, 5.6e-2, 9.1e-2, 1.5e-1, 2.5e-1, 3.9e-1, 5.0e-1, 5.4e-1, 5.6e-1, 5.6e-1, 5.6e-1, 5.6e-1, 5.6e-1, 5.6e-1, 5.6e-1, 5.6e-1],
     [3.7e-2, 6.0e-2, 9.7e-2, 1.6e-1, 2.6e-1, 4.6e-1, 6.3e-1, 7.1e-1, 7.5e-1, 7.7e-1, 7.8e-1, 7.8e-1, 7.8e-1, 7.9e-1, 7.9e-1, 7.9e-1],
-    [3.9e-2, 6.3e-2, 1.1e-1, 1.7e-1, 2.8e-1, 5.4e-1, 7.8e-1, 9.2e-1, 1.0e0, 1.1e0, 1.1e0, 1.1e0, 1.1e0, 1.1e0, 1.1e0, f64::INFINITY],
-    [4.1e-2, 6.7e-2, 1.1e-1, 1.8e-1, 3.0e-1, 6.2e-1, 9.7e-1, 1.3e0, 1.4e0, 1.5e0, 1.5e0, 1.6e0, 1.6e0, 1.6e0, 1.6e0, f64::INFINITY],
+    [3.9e-2, 6.3e-2, 1.1e-1, 1.7e-1, 2.8e-1, 5.4e-1, 7.8e-1, 9.2e-1, 1.0e0, 1.1e0, 1.1e0, 1.1e0, 1.1e0, 1.1e0, 1.1e0, 1.2e0],
+    [4.1e-2, 6.7e-2, 1.1e-1, 1.8e-1, 3.0e-1, 6.2e-1, 9.7e-1, 1.3e0, 1.4e0, 1.5e0, 1.5e0, 1.6e0, 1.6e0, 1.6e0, 1.6e0, 1.6e0],
 ];
 
 /// Largest c of the three methods at the first column.
 pub(super) const BELOW: [f64; 19] = [9.9e-1, 7.1e-1, 3.7e-1, 1.8e-1, 7.9e-2, 3.6e-2, 1.7e-2, 7.5e-3, 3.5e-3, 1.6e-3, 7.1e-4, 3.3e-4, 1.5e-4, 6.8e-5, 3.1e-5, 1.4e-5, 6.4e-6, 2.9e-6, 1.4e-6];
 
 /// Largest 1 - c of the three methods at the last column.
-pub(super) const ABOVE: [f64; 19] = [f64::INFINITY, f64::INFINITY, f64::INFINITY, 3.5e-6, 5.9e-6, 9.0e-6, 4.5e-5, 2.8e-4, 1.2e-3, 3.9e-3, 1.1e-2, 2.4e-2, 4.9e-2, 9.1e-2, 1.6e-1, 2.6e-1, 3.9e-1, f64::INFINITY, f64::INFINITY];
+pub(super) const ABOVE: [f64; 19] = [4.5e-8, f64::INFINITY, 1.7e-6, 3.5e-6, 5.9e-6, 9.0e-6, 4.5e-5, 2.8e-4, 1.2e-3, 3.9e-3, 1.1e-2, 2.4e-2, 4.9e-2, 9.1e-2, 1.6e-1, 2.6e-1, 3.9e-1, 5.6e-1, 7.7e-1];

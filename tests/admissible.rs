@@ -1,0 +1,93 @@
+//! Every OK answer of COUPLED (and of AUTO, which falls back on it) is admissible (issue 8,
+//! point 7), checked from the returned tractions and slip, over the reduced plane
+//! (THEORY.md section 4: the material `effective(1, 1 - 2 b*, 1, 1)` with mu = mu~) including
+//! its corners, where the closed-form regimes answer:
+//! - p > 0 on the whole contact;
+//! - |q| <= mu p on the stick zone, q = mu p sgn x on the slip zones;
+//! - the solid slips inward: slip(x) <= 0 for c < x < 1 (THEORY.md section 3);
+//! - c is monotone in mu (non-decreasing) along each b*.
+
+use orthoslip::{Contact, Material, Method, Solution};
+
+const B_STAR: [f64; 6] = [0.05, 0.2, 0.45, 0.7, 0.9, 0.99];
+const MU_TILDE: [f64; 8] = [1e-3, 1e-2, 0.05, 0.2, 1.0, 5.0, 30.0, 300.0];
+
+/// Relative slack of the inequalities (the tractions' own accuracy at tolerance 1e-8).
+const SLACK: f64 = 1e-6;
+
+fn solve(b: f64, mu: f64, method: Method) -> Option<Solution> {
+    let m = Material::effective(1.0, 1.0 - 2.0 * b, 1.0, 1.0).unwrap();
+    let mut contact = Contact::new(m);
+    contact.set_friction(mu).unwrap();
+    contact.set_method(method);
+    contact.solve().ok()
+}
+
+/// What is inadmissible about `s`, if anything.
+fn violations(s: &Solution, scene: &str) -> Vec<String> {
+    let (c, w) = (s.c(), s.one_minus_c());
+    let mu = s.coupling().mu;
+    let mut bad = Vec::new();
+    let mut xs: Vec<f64> = (0..400).map(|i| (i as f64 + 0.5) / 400.0).collect();
+    for d in [1e-12, 1e-9, 1e-6, 1e-3] {
+        xs.extend([c * (1.0 - d), c + w * d, 1.0 - d]);
+    }
+    for x in xs.into_iter().filter(|&x| x > 0.0 && x < 1.0) {
+        let (p, q) = s.tractions(x);
+        if p <= 0.0 {
+            bad.push(format!("{scene}: p = {p:e} at x = {x}"));
+        } else if x < c && q.abs() > mu * p * (1.0 + SLACK) {
+            bad.push(format!(
+                "{scene}: |q| = {q:e} > mu p = {:e} at x = {x} (stick)",
+                mu * p
+            ));
+        } else if x > c && (q - mu * p).abs() > SLACK * mu * p {
+            bad.push(format!(
+                "{scene}: q = {q:e} != mu p = {:e} at x = {x} (slip)",
+                mu * p
+            ));
+        }
+        if x > c && s.slip(x).unwrap() > SLACK * s.slip(1.0).unwrap().abs() {
+            bad.push(format!(
+                "{scene}: slip {:e} outward at x = {x}",
+                s.slip(x).unwrap()
+            ));
+        }
+        if bad.len() > 3 {
+            break;
+        }
+    }
+    bad
+}
+
+#[test]
+fn every_ok_answer_is_admissible_and_c_grows_with_mu() {
+    let mut bad = Vec::new();
+    let mut answered = 0;
+    for b in B_STAR {
+        let mut last: Option<(f64, f64)> = None;
+        for mu in MU_TILDE {
+            let Some(s) = solve(b, mu, Method::Coupled) else {
+                continue;
+            };
+            answered += 1;
+            let scene = format!("b* = {b}, mu~ = {mu}");
+            bad.extend(violations(&s, &scene));
+            // c (and -(1 - c)) non-decreasing in mu, within the error estimates
+            if let Some((c0, e0)) = last
+                && s.c() < c0 - e0 - s.error_estimate()
+            {
+                bad.push(format!("{scene}: c = {} below {c0} at smaller mu", s.c()));
+            }
+            last = Some((s.c(), s.error_estimate()));
+        }
+    }
+    println!("{answered} COUPLED answers checked");
+    assert!(answered >= 36, "only {answered} answers");
+    assert!(
+        bad.is_empty(),
+        "{} violations:\n{}",
+        bad.len(),
+        bad.join("\n")
+    );
+}
