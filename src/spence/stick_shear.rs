@@ -30,6 +30,9 @@ const SIGMA: f64 = 1.3;
 /// A = KAPPA SIGMA exp(-t_band): the sinh term reaches KAPPA / 2 of the slope at the band's
 /// ends t = +-t_band.
 const KAPPA: f64 = 0.3;
+/// e^(j STEP), j < 96 (t up to 24: every node of a band narrower than 2 SIGMA (24 - 6) ~ 47).
+static EXP_STEPS: std::sync::LazyLock<[f64; 96]> =
+    std::sync::LazyLock::new(|| std::array::from_fn(|j| (j as f64 * STEP).exp()));
 /// Chebyshev interpolation error aimed at: rho^-n on a Bernstein ellipse rho (6.44^-22 for
 /// width 2, the strip |Im ln eta| < pi).
 const CHEBYSHEV_TOL: f64 = 2e-18;
@@ -64,19 +67,23 @@ struct Transform {
 }
 
 impl Transform {
-    /// The integrand rho^(1-g) G(rho) of S in r, with rho (rho = e^r and 1 - c^2 may
-    /// underflow): y = exp(-|r - ln m1|) = min(rho / m1, m1 / rho) gives
-    /// ln(u - m) = ln(m1 + rho) = max(r, ln m1) + ln(1 + y) and m1 / (m1 + rho) without
-    /// cancellation; artanh(z) = ln(1 + z) - ln(1 - z^2)/2 with 1 - z^2 = m rho / (m1 + rho).
+    /// The integrand rho^(1-g) G(rho) of S in r, with rho. With x = m1 / rho (at most e^85 on
+    /// the nodes; exp(ln m1 - r) where rho or 1 - c^2 underflows):
+    /// u - m = m1 + rho = rho (1 + x), z^2 = u x / (1 + x), and
+    /// artanh(z) = ln(1 + z) - ln(1 - z^2) / 2 with 1 - z^2 = m / (1 + x), so
+    ///   rho^(1-g) G = rho^(1/2-g) [-bq + (2 mu / pi) (ln((1 + z) sqrt(1 + x)) - ln(m) / 2)]
+    ///                 / sqrt(u (1 + x)).
     fn integrand(bq: f64, mu: f64, g: f64, v: &super::compatibility::Split, r: f64) -> (f64, f64) {
         let rho = r.exp();
-        let y = (-(r - v.ln_m1).abs()).exp();
-        let ln_um = r.max(v.ln_m1) + y.ln_1p();
-        let share = if r > v.ln_m1 { y } else { 1.0 } / (1.0 + y);
+        let x = if rho >= f64::MIN_POSITIVE && v.m1 >= f64::MIN_POSITIVE {
+            v.m1 / rho
+        } else {
+            (v.ln_m1 - r).exp()
+        };
         let u = 1.0 + rho;
-        let z = (u * share).sqrt();
-        let artanh = z.ln_1p() - 0.5 * (v.ln_m + r - ln_um);
-        let scale = ((1.0 - g) * r - 0.5 * ln_um).exp() / u.sqrt();
+        let z = (u * x / (1.0 + x)).sqrt();
+        let artanh = ((1.0 + z) * (1.0 + x).sqrt()).ln() - 0.5 * v.ln_m;
+        let scale = ((0.5 - g) * r).exp() / (u * (1.0 + x)).sqrt();
         (rho, scale * (-bq + 2.0 * mu / PI * artanh))
     }
 
@@ -90,18 +97,24 @@ impl Transform {
         let r_lo = v.ln_m1.min(eta_min.ln()) - 85.0;
         let r_hi = 45.0;
         let r_cut = (RHO_CUT * eta_min).ln();
+        let nodes = (band / (SIGMA * STEP)) as usize + 64;
         let mut t = Transform {
-            rho: Vec::new(),
-            weight: Vec::new(),
+            rho: Vec::with_capacity(nodes),
+            weight: Vec::with_capacity(nodes),
             moments: [0.0; MOMENTS],
         };
+        let half_a = 0.5 * KAPPA * SIGMA * (-t_band).exp();
         for j in 0.. {
             let tj = j as f64 * STEP;
-            // A e^(+-t) / 2 = KAPPA SIGMA exp(+-t - t_band) / 2, never overflowing.
-            let (up, down) = (
-                0.5 * KAPPA * SIGMA * (tj - t_band).exp(),
-                0.5 * KAPPA * SIGMA * (-tj - t_band).exp(),
-            );
+            // A e^(+-t) / 2 = KAPPA SIGMA exp(+-t - t_band) / 2, from the table of e^t while it
+            // lasts (and while exp(-t_band) does not underflow).
+            let (up, down) = match EXP_STEPS.get(j) {
+                Some(&e) if half_a > 0.0 => (half_a * e, half_a / e),
+                _ => (
+                    0.5 * KAPPA * SIGMA * (tj - t_band).exp(),
+                    0.5 * KAPPA * SIGMA * (-tj - t_band).exp(),
+                ),
+            };
             let (offset, slope) = (SIGMA * tj + up - down, SIGMA + up + down);
             let sides: &[f64] = if j == 0 { &[1.0] } else { &[1.0, -1.0] };
             let mut inside = false;
@@ -131,21 +144,26 @@ impl Transform {
         t
     }
 
-    /// S(eta) for eta >= eta_min.
-    fn eval(&self, eta: f64) -> f64 {
-        let near: f64 = self
-            .rho
-            .iter()
-            .zip(&self.weight)
-            .map(|(r, w)| w / (r + eta))
-            .sum();
-        let mut far = 0.0;
-        let mut inv = 1.0 / eta;
-        for (j, mj) in self.moments.iter().enumerate() {
-            far += if j % 2 == 0 { mj * inv } else { -mj * inv };
-            inv /= eta;
+    /// S(eta) at each of `etas` (all >= eta_min), the nodes summed in the same order for each.
+    fn eval(&self, etas: &[f64]) -> Vec<f64> {
+        let mut near = vec![0.0; etas.len()];
+        for (r, w) in self.rho.iter().zip(&self.weight) {
+            for (s, eta) in near.iter_mut().zip(etas) {
+                *s += w / (r + eta);
+            }
         }
-        near + far
+        near.iter()
+            .zip(etas)
+            .map(|(near, eta)| {
+                let mut far = 0.0;
+                let mut inv = 1.0 / eta;
+                for (j, mj) in self.moments.iter().enumerate() {
+                    far += if j % 2 == 0 { mj * inv } else { -mj * inv };
+                    inv /= eta;
+                }
+                near + far
+            })
+            .collect()
     }
 }
 
@@ -167,7 +185,7 @@ impl StickShear {
         for i in 0..panels {
             let a = ell_lo + i as f64 * width;
             coef.extend(chebyshev_fit(
-                |ell| transform.eval(ell.exp()),
+                |ells| transform.eval(&ells.iter().map(|ell| ell.exp()).collect::<Vec<_>>()),
                 a,
                 a + width,
                 degree,
