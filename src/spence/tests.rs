@@ -105,6 +105,31 @@ fn compatibility_sides_match_quadrature() {
     }
 }
 
+/// The root c found by Newton's method satisfies the compatibility condition with both sides
+/// by quadrature: bq int_0^c p / sqrt(c^2 - x^2) = mu int_c^1 p / sqrt(t^2 - c^2).
+#[test]
+fn root_satisfies_compatibility_by_quadrature() {
+    for (bp, bq, mu) in [
+        (steel(), steel(), 0.1),
+        (steel(), steel(), 0.3),
+        (steel(), steel(), 1.0),
+        (0.162, 0.68, 0.3),
+        (0.9, 0.9, 3.0),
+        (0.03, 3.2, 1.0),
+        (0.5, 0.1, 0.05),
+    ] {
+        let s = solve(&Coupling { bp, bq, mu }).unwrap();
+        let (g, e) = (s.edge_exponent(), s.edge());
+        let left = bq * left_integral(g, e.c, e.one_minus_c);
+        let right = mu * right_integral(g, e.c);
+        assert!(
+            (left / right - 1.0).abs() < 1e-13,
+            "bp {bp} bq {bq} mu {mu}: c = {}, {left} vs {right}",
+            e.c
+        );
+    }
+}
+
 #[test]
 fn reduces_to_goodman_at_zero_bp() {
     for (bq, mu) in [
