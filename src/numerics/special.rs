@@ -132,9 +132,9 @@ pub(crate) struct Hyp2f1 {
 struct NearOne {
     /// Gamma(c) / (Gamma(a + e) Gamma(b + e) Gamma(1 - e)) (pi e / sin(pi e)).
     prefactor: f64,
-    /// D_0 - ln w = [ln Gamma(a + e) - ln Gamma(a) + ln Gamma(b + e) - ln Gamma(b)
-    ///               - ln Gamma(1 + e) + ln Gamma(1 - e)] / e.
-    d0: f64,
+    /// The three parts of D_0 - ln w: [ln Gamma(a + e) - ln Gamma(a)] / e,
+    /// [ln Gamma(b + e) - ln Gamma(b)] / e and [ln Gamma(1 + e) - ln Gamma(1 - e)] / (2 e).
+    slopes: [f64; 3],
 }
 
 impl Hyp2f1 {
@@ -162,7 +162,8 @@ impl Hyp2f1 {
     pub(crate) fn log_limit(&self) -> (f64, f64) {
         debug_assert!(self.e == 0.0, "the logarithmic case only");
         let k = self.constants();
-        (k.prefactor, k.d0)
+        let [da, db, dn] = k.slopes;
+        (k.prefactor, da + db - 2.0 * dn)
     }
 
     /// The constants of [`Hyp2f1::near_one`], computed on first use.
@@ -175,12 +176,15 @@ impl Hyp2f1 {
             } else {
                 PI * e / (PI * e).sin()
             };
+            let prefactor =
+                (ln_gamma(c) - ln_gamma(a + e) - ln_gamma(b + e) - ln_gamma(1.0 - e)).exp();
             NearOne {
-                prefactor: reflection
-                    * (ln_gamma(c) - ln_gamma(a + e) - ln_gamma(b + e) - ln_gamma(1.0 - e)).exp(),
-                // [ln Gamma(n + 1 + e) - ln Gamma(n + 1 - e)] / (2 e) at n = 0
-                d0: ln_gamma_slope(a, e) + ln_gamma_slope(b, e)
-                    - 2.0 * ln_gamma_slope(1.0 - e, 2.0 * e),
+                prefactor: prefactor * reflection,
+                slopes: [
+                    ln_gamma_slope(a, e),
+                    ln_gamma_slope(b, e),
+                    ln_gamma_slope(1.0 - e, 2.0 * e),
+                ],
             }
         })
     }
@@ -203,42 +207,38 @@ impl Hyp2f1 {
 
     /// The expansion about z = 1 in w = 1 - z (|w| <= 1/2; w < 0 only for e = 0), DLMF 15.8.4
     /// with c = a + b + e summed term by term:
-    ///   F = prefactor sum_n r_n w^n (-Q_n),  Q_n = D_n exprel(e D_n) = (exp(e D_n) - 1) / e,
+    ///   F = prefactor sum_n r_n w^n (-D_n) exprel(e D_n),
     ///   r_n = (a)_n (b)_n / (n! (1 - e)_n),
     ///   D_n = [ln Gamma(a+n+e) - ln Gamma(a+n) + ln Gamma(b+n+e) - ln Gamma(b+n)
     ///          - ln Gamma(n+1+e) + ln Gamma(n+1-e)] / e + ln w,
-    /// which at e = 0 is DLMF 15.8.10 (Q_n = D_n = psi(a+n) + psi(b+n) - 2 psi(n+1) + ln w), so
-    /// it goes over into the logarithmic case without cancellation between the two terms of
-    /// 15.8.4. With A = a + n, B = b + n, N = n + 1, exp(e (D_{n+1} - D_n)) is the rational
-    /// (A + e)(B + e)(N - e) / (A B (N + e)) = 1 + e X_n,
-    ///   X_n = [n (2 - c) + a + b - 2ab + e (1 - c)] / (A B (N + e))
-    /// (expanded, the numerator's e^0 part is (A + B) N - 2 A B), so
-    ///   Q_{n+1} = Q_n (1 + e X_n) + X_n
-    /// and only Q_0 needs a transcendental function. With dQ_n/dw = (1 + e Q_n) / w,
+    /// which at e = 0 is DLMF 15.8.10 (D_n = psi(a+n) + psi(b+n) - 2 psi(n+1) + ln w), so it
+    /// goes over into the logarithmic case without cancellation between the two terms of 15.8.4.
+    /// With Q_n = D_n exprel(e D_n) = (exp(e D_n) - 1) / e and dQ_n/dw = (1 + e Q_n) / w,
     ///   dF/ds = -z w dF/dw = prefactor z sum_n r_n w^n ((n + e) Q_n + 1).
     fn near_one(&self, z: f64, w: f64, ln_w: f64) -> (f64, f64) {
         let (a, b, e) = (self.a, self.b, self.e);
         debug_assert!(w >= 0.0 || e == 0.0, "z > 1 only in the logarithmic case");
         let k = self.constants();
-        let c = a + b + e;
-        let (x_const, x_slope) = (a + b - 2.0 * a * b + e * (1.0 - c), 2.0 - c);
-        let d = k.d0 + ln_w;
-        let mut q = d * exprel(e * d);
+        let [mut da, mut db, mut dn] = k.slopes;
         let (mut r, mut wn, mut sum, mut slope) = (1.0, 1.0, 0.0, 0.0);
         for n in 0..MAX_TERMS {
-            let nf = n as f64;
-            let term = r * wn * q;
+            let d = da + db - 2.0 * dn + ln_w;
+            let x = exprel(e * d);
+            let term = -r * wn * d * x;
+            let q = d * x;
             sum += term;
+            let nf = n as f64;
             slope += r * wn * ((nf + e) * q + 1.0);
             wn *= w;
             if wn == 0.0 || (n > 0 && term.abs() <= SERIES_TOL * sum.abs()) {
                 break;
             }
-            let x = (nf * x_slope + x_const) / ((a + nf) * (b + nf) * (nf + 1.0 + e));
-            q = q * (1.0 + e * x) + x;
+            da += log_slope(a + nf, e);
+            db += log_slope(b + nf, e);
+            dn += log_slope(nf + 1.0 - e, 2.0 * e);
             r *= (a + nf) * (b + nf) / ((nf + 1.0) * (nf + 1.0 - e));
         }
-        (-k.prefactor * sum, k.prefactor * z * slope)
+        (k.prefactor * sum, k.prefactor * z * slope)
     }
 }
 
@@ -411,7 +411,7 @@ mod tests {
     #[test]
     fn logarithmic_case_beyond_one() {
         let a: f64 = 0.37;
-        for z in [-0.45f64, 0.3] {
+        for z in [-0.45f64, 0.3, 0.6, 0.9] {
             let direct: f64 = (0..400).map(|k| a * z.powi(k) / (a + k as f64)).sum();
             assert!(rel(hyp2f1(1.0, a, 0.0, z, 1.0 - z, (1.0 - z).ln()), direct) < 1e-15);
         }

@@ -118,7 +118,8 @@ impl Compatibility {
     }
 
     /// The root s* of Phi with an estimate of its error |s - s*|. Newton's iterates stop where
-    /// |Phi| is within its rounding error or the step is below 2 ulps of s.
+    /// |Phi| is within its rounding error or the step is below 2 ulps of s, after taking that
+    /// last step.
     pub fn root(&self) -> Result<(f64, f64)> {
         let mut s = self.guess().clamp(-S_MAX, S_MAX);
         // The bracket found so far: (s, Phi(s)) with Phi < 0 and with Phi > 0.
@@ -132,7 +133,8 @@ impl Compatibility {
             }
             let step = v.phi / v.slope;
             if v.phi.abs() <= v.err || step.abs() <= 2.0 * f64::EPSILON * s.abs() {
-                return Ok((s, Self::error_of(s, &v)));
+                // the last step too: the estimate from its start also bounds its end
+                return Ok((s - step, Self::error_of(s, &v)));
             }
             if v.phi < 0.0 {
                 lo = Some((s, v.phi));

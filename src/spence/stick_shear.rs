@@ -54,6 +54,7 @@ pub(super) struct StickShear {
     ell_lo: f64,
     width: f64,
     /// Chebyshev coefficients, `degree` per panel.
+    panels: usize,
     degree: usize,
     coef: Vec<f64>,
 }
@@ -197,6 +198,7 @@ impl StickShear {
             scale: norm * (PI * g).sin() / PI,
             ell_lo,
             width,
+            panels,
             degree,
             coef,
         }
@@ -206,8 +208,7 @@ impl StickShear {
     pub fn q(&self, x: f64, p: f64, ell: f64, c: f64) -> f64 {
         let d = ((c - x) * (c + x)).sqrt();
         let t = (ell - self.ell_lo) / self.width;
-        let panels = self.coef.len() / self.degree;
-        let i = (t.floor().max(0.0) as usize).min(panels - 1);
+        let i = (t.floor().max(0.0) as usize).min(self.panels - 1);
         let local = (2.0 * (t - i as f64) - 1.0).clamp(-1.0, 1.0);
         let s = chebyshev_sum(&self.coef[i * self.degree..(i + 1) * self.degree], local);
         2.0 / PI * self.mu * p * (x * self.sqrt_m1).atan2(d) + self.scale * x * d * s
