@@ -6,7 +6,9 @@
 //! Run: `cargo run --release --example speed_accuracy` (one core is enough; ~6 minutes;
 //! writes docs/speed_accuracy.csv, docs/speed_accuracy_medians.md and
 //! docs/speed_accuracy.svg). `--quick` skips LCP at N = 3200 (~10 s per solve);
-//! `--from-csv` redraws the table and chart from an existing docs/speed_accuracy.csv.
+//! `--from-csv` redraws the table and chart from an existing docs/speed_accuracy.csv;
+//! `--only METHOD` (e.g. `--only SPENCE`) times that method alone against the same references
+//! and prints its rows and medians without writing any file.
 
 mod support;
 
@@ -104,19 +106,31 @@ struct Row {
 }
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
+    let args: Vec<String> = std::env::args().collect();
+    let only = args
+        .iter()
+        .position(|a| a == "--only")
+        .map(|i| args.get(i + 1).ok_or("--only needs a method name"))
+        .transpose()?
+        .map(|m| m.to_uppercase());
+    if only.is_some() {
+        let rows = measure(true, only.as_deref())?;
+        return report(&rows, false);
+    }
     std::fs::create_dir_all("docs")?;
-    let rows = if std::env::args().any(|a| a == "--from-csv") {
+    let rows = if args.iter().any(|a| a == "--from-csv") {
         read_csv(&std::fs::read_to_string("docs/speed_accuracy.csv")?)?
     } else {
-        let rows = measure(std::env::args().any(|a| a == "--quick"))?;
+        let rows = measure(args.iter().any(|a| a == "--quick"), None)?;
         write_csv(&rows)?;
         rows
     };
-    report(&rows)
+    report(&rows, true)
 }
 
-/// Times every method at every resolution on every scene.
-fn measure(quick: bool) -> Result<Vec<Row>, Box<dyn std::error::Error>> {
+/// Times every method (or only the one named) at every resolution on every scene.
+fn measure(quick: bool, only: Option<&str>) -> Result<Vec<Row>, Box<dyn std::error::Error>> {
+    let wanted = |method: &str| only.is_none_or(|m| m == method);
     let scenes = scenes();
     let mut rows = Vec::new();
     for scene in &scenes {
@@ -143,22 +157,36 @@ fn measure(quick: bool) -> Result<Vec<Row>, Box<dyn std::error::Error>> {
                     traction_error: traction_error(s, &reference),
                 })
             };
-        if let Some((t, s)) = time_solve(|| scene.contact.solve()) {
+        if wanted("AUTO")
+            && let Some((t, s)) = time_solve(|| scene.contact.solve())
+        {
             let chosen = format!("default tol: {:?}", s.method()).to_uppercase();
             record("AUTO", chosen, t, s.profile());
         }
-        if let Some((t, s)) = time_solve(|| goodman::solve(&k)) {
+        if wanted("GOODMAN")
+            && let Some((t, s)) = time_solve(|| goodman::solve(&k))
+        {
             record("GOODMAN", "-".into(), t, &s);
         }
-        if let Some((t, s)) = time_solve(|| spence::solve(&k)) {
+        if wanted("SPENCE")
+            && let Some((t, s)) = time_solve(|| spence::solve(&k))
+        {
             record("SPENCE", "-".into(), t, &s);
         }
         for tol in [1e-4, 1e-6, 1e-8, 1e-10, 1e-12] {
-            if let Some((t, s)) = time_solve(|| coupled::solve(&k, tol)) {
+            if wanted("COUPLED")
+                && let Some((t, s)) = time_solve(|| coupled::solve(&k, tol))
+            {
                 record("COUPLED", format!("tol {tol:.0e}"), t, &s);
             }
         }
-        let max_n = if quick { 800 } else { 3200 };
+        let max_n = if !wanted("LCP") {
+            0
+        } else if quick {
+            800
+        } else {
+            3200
+        };
         let mut n = 50;
         while n <= max_n {
             if let Some((t, s)) = time_solve(|| lcp::solve(&k, n)) {
@@ -218,8 +246,22 @@ fn read_csv(text: &str) -> Result<Vec<Row>, Box<dyn std::error::Error>> {
 }
 
 /// The table of medians over the scenes and the chart of the medians with their Pareto
-/// front.
-fn report(rows: &[Row]) -> Result<(), Box<dyn std::error::Error>> {
+/// front (written to docs/ when `write` is set; otherwise the rows and the table are printed).
+fn report(rows: &[Row], write: bool) -> Result<(), Box<dyn std::error::Error>> {
+    if !write {
+        for r in rows {
+            println!(
+                "{}: {} {} {} c = {:.15e} (error {:.1e}), traction error {:.1e}",
+                r.scene,
+                r.method,
+                r.resolution,
+                fmt_time(r.seconds),
+                r.c,
+                r.c_error,
+                r.traction_error
+            );
+        }
+    }
     // Medians over scenes per (method, resolution).
     let mut keys: Vec<(&str, String)> = Vec::new();
     for r in rows {
@@ -252,8 +294,11 @@ fn report(rows: &[Row]) -> Result<(), Box<dyn std::error::Error>> {
         )?;
         medians.push((method, t, e.max(1e-16)));
     }
-    std::fs::write("docs/speed_accuracy_medians.md", &md)?;
     print!("{md}");
+    if !write {
+        return Ok(());
+    }
+    std::fs::write("docs/speed_accuracy_medians.md", &md)?;
 
     // Chart: median error in c against median time per solve, one series per method
     // (its resolutions joined), and the Pareto front of those medians.

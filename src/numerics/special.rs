@@ -113,71 +113,138 @@ const MAX_TERMS: usize = 400;
 /// Relative size of the first hypergeometric series term left out.
 const SERIES_TOL: f64 = 1e-17;
 
-/// The power series of 2F1(a, b; c; z) for |z| <= 1/2 (DLMF 15.2.1).
-pub(crate) fn hyp2f1_series(a: f64, b: f64, c: f64, z: f64) -> f64 {
-    let (mut term, mut sum) = (1.0, 1.0);
-    for n in 0..MAX_TERMS {
-        let n = n as f64;
-        term *= (a + n) * (b + n) / ((c + n) * (n + 1.0)) * z;
-        sum += term;
-        if term.abs() <= SERIES_TOL * sum.abs() {
-            break;
-        }
-    }
-    sum
+/// The Gauss hypergeometric function F(z) = 2F1(a, b; a + b + e; z) for fixed a, b > 0 and
+/// 0 <= e < 1, on -1/2 <= z < 1 (also 1 < z <= 3/2 when e = 0: the real part of the
+/// continuation, the mean of its values above and below the cut), with its derivative in the
+/// logit s = ln(z / (1 - z)): dF/ds = z (1 - z) F'(z). Evaluated by the power series about
+/// z = 0 for z <= 1/2 and about z = 1 beyond ([`Hyp2f1::near_one`]), whose constants
+/// (Gamma functions of a, b, e) are computed once, on first use.
+#[derive(Clone, Debug)]
+pub(crate) struct Hyp2f1 {
+    a: f64,
+    b: f64,
+    e: f64,
+    near_one: std::cell::OnceCell<NearOne>,
 }
 
-/// 2F1(a, b; a + b + e; 1 - w) for a, b > 0, 0 <= e < 1 and |w| <= 1/2, given ln|w|
-/// separately (w may underflow); w < 0 (z > 1) only for e = 0, where it gives the real part
-/// of the continuation (the mean of its values above and below the cut). DLMF 15.8.4 with
-/// c = a + b + e, summed term by term:
-///   2F1 = Gamma(c) / (Gamma(a + e) Gamma(b + e) Gamma(1 - e)) (pi e / sin(pi e))
-///         sum_n r_n w^n (-D_n) exprel(e D_n),
-///   r_n = (a)_n (b)_n / (n! (1 - e)_n),
-///   D_n = [ln Gamma(a+n+e) - ln Gamma(a+n) + ln Gamma(b+n+e) - ln Gamma(b+n)
-///          - ln Gamma(n+1+e) + ln Gamma(n+1-e)] / e + ln w,
-/// which at e = 0 is DLMF 15.8.10 (D_n = psi(a+n) + psi(b+n) - 2 psi(n+1) + ln w), so it goes
-/// over into the logarithmic case without cancellation between the two terms of 15.8.4.
-pub(crate) fn hyp2f1_near_one(a: f64, b: f64, e: f64, w: f64, ln_w: f64) -> f64 {
-    debug_assert!(w >= 0.0 || e == 0.0, "z > 1 only in the logarithmic case");
-    let c = a + b + e;
-    let prefactor = (ln_gamma(c) - ln_gamma(a + e) - ln_gamma(b + e) - ln_gamma(1.0 - e)).exp();
-    let reflection = if e == 0.0 {
-        1.0
-    } else {
-        PI * e / (PI * e).sin()
-    };
-    let mut da = ln_gamma_slope(a, e);
-    let mut db = ln_gamma_slope(b, e);
-    // [ln Gamma(n + 1 + e) - ln Gamma(n + 1 - e)] / (2 e)
-    let mut dn = ln_gamma_slope(1.0 - e, 2.0 * e);
-    let (mut r, mut wn, mut sum) = (1.0, 1.0, 0.0);
-    for n in 0..MAX_TERMS {
-        let d = da + db - 2.0 * dn + ln_w;
-        let term = -r * wn * d * exprel(e * d);
-        sum += term;
-        let nf = n as f64;
-        wn *= w;
-        if wn == 0.0 || (n > 0 && term.abs() <= SERIES_TOL * sum.abs()) {
-            break;
-        }
-        da += log_slope(a + nf, e);
-        db += log_slope(b + nf, e);
-        dn += log_slope(nf + 1.0 - e, 2.0 * e);
-        r *= (a + nf) * (b + nf) / ((nf + 1.0) * (nf + 1.0 - e));
-    }
-    prefactor * reflection * sum
+/// The constants of the expansion about z = 1 (DLMF 15.8.4, see [`Hyp2f1::near_one`]).
+#[derive(Clone, Copy, Debug)]
+struct NearOne {
+    /// Gamma(c) / (Gamma(a + e) Gamma(b + e) Gamma(1 - e)) (pi e / sin(pi e)).
+    prefactor: f64,
+    /// The three parts of D_0 - ln w: [ln Gamma(a + e) - ln Gamma(a)] / e,
+    /// [ln Gamma(b + e) - ln Gamma(b)] / e and [ln Gamma(1 + e) - ln Gamma(1 - e)] / (2 e).
+    slopes: [f64; 3],
 }
 
-/// 2F1(a, b; a + b + e; z) for a, b > 0, 0 <= e < 1 and -1/2 <= z < 1 (also 1 < z <= 3/2 when
-/// e = 0: the real part, see [`hyp2f1_near_one`]), given z, 1 - z and ln|1 - z| to full
-/// relative accuracy.
+impl Hyp2f1 {
+    /// 2F1(a, b; a + b + e; .) for a, b > 0 and 0 <= e < 1.
+    pub(crate) fn new(a: f64, b: f64, e: f64) -> Self {
+        Self {
+            a,
+            b,
+            e,
+            near_one: std::cell::OnceCell::new(),
+        }
+    }
+
+    /// (F(z), dF/ds), given z, 1 - z and ln|1 - z| to full relative accuracy.
+    pub(crate) fn eval(&self, z: f64, one_minus_z: f64, ln_one_minus_z: f64) -> (f64, f64) {
+        if z <= 0.5 {
+            self.series(z)
+        } else {
+            self.near_one(z, one_minus_z, ln_one_minus_z)
+        }
+    }
+
+    /// (P, D) of the logarithmic case (e = 0) at z -> 1:
+    /// F = -P (D + ln(1 - z)) + O((1 - z) ln(1 - z)) (the first term of [`Hyp2f1::near_one`]).
+    pub(crate) fn log_limit(&self) -> (f64, f64) {
+        debug_assert!(self.e == 0.0, "the logarithmic case only");
+        let k = self.constants();
+        let [da, db, dn] = k.slopes;
+        (k.prefactor, da + db - 2.0 * dn)
+    }
+
+    /// The constants of [`Hyp2f1::near_one`], computed on first use.
+    fn constants(&self) -> &NearOne {
+        let (a, b, e) = (self.a, self.b, self.e);
+        self.near_one.get_or_init(|| {
+            let c = a + b + e;
+            let reflection = if e == 0.0 {
+                1.0
+            } else {
+                PI * e / (PI * e).sin()
+            };
+            let prefactor =
+                (ln_gamma(c) - ln_gamma(a + e) - ln_gamma(b + e) - ln_gamma(1.0 - e)).exp();
+            NearOne {
+                prefactor: prefactor * reflection,
+                slopes: [
+                    ln_gamma_slope(a, e),
+                    ln_gamma_slope(b, e),
+                    ln_gamma_slope(1.0 - e, 2.0 * e),
+                ],
+            }
+        })
+    }
+
+    /// The power series (DLMF 15.2.1) for |z| <= 1/2 with dF/ds = (1 - z) sum n t_n.
+    fn series(&self, z: f64) -> (f64, f64) {
+        let c = self.a + self.b + self.e;
+        let (mut term, mut sum, mut slope) = (1.0, 1.0, 0.0);
+        for n in 0..MAX_TERMS {
+            let n = n as f64;
+            term *= (self.a + n) * (self.b + n) / ((c + n) * (n + 1.0)) * z;
+            sum += term;
+            slope += (n + 1.0) * term;
+            if term.abs() <= SERIES_TOL * sum.abs() {
+                break;
+            }
+        }
+        (sum, (1.0 - z) * slope)
+    }
+
+    /// The expansion about z = 1 in w = 1 - z (|w| <= 1/2; w < 0 only for e = 0), DLMF 15.8.4
+    /// with c = a + b + e summed term by term:
+    ///   F = prefactor sum_n r_n w^n (-D_n) exprel(e D_n),
+    ///   r_n = (a)_n (b)_n / (n! (1 - e)_n),
+    ///   D_n = [ln Gamma(a+n+e) - ln Gamma(a+n) + ln Gamma(b+n+e) - ln Gamma(b+n)
+    ///          - ln Gamma(n+1+e) + ln Gamma(n+1-e)] / e + ln w,
+    /// which at e = 0 is DLMF 15.8.10 (D_n = psi(a+n) + psi(b+n) - 2 psi(n+1) + ln w), so it
+    /// goes over into the logarithmic case without cancellation between the two terms of 15.8.4.
+    /// With Q_n = D_n exprel(e D_n) = (exp(e D_n) - 1) / e and dQ_n/dw = (1 + e Q_n) / w,
+    ///   dF/ds = -z w dF/dw = prefactor z sum_n r_n w^n ((n + e) Q_n + 1).
+    fn near_one(&self, z: f64, w: f64, ln_w: f64) -> (f64, f64) {
+        let (a, b, e) = (self.a, self.b, self.e);
+        debug_assert!(w >= 0.0 || e == 0.0, "z > 1 only in the logarithmic case");
+        let k = self.constants();
+        let [mut da, mut db, mut dn] = k.slopes;
+        let (mut r, mut wn, mut sum, mut slope) = (1.0, 1.0, 0.0, 0.0);
+        for n in 0..MAX_TERMS {
+            let d = da + db - 2.0 * dn + ln_w;
+            let x = exprel(e * d);
+            let term = -r * wn * d * x;
+            let q = d * x;
+            sum += term;
+            let nf = n as f64;
+            slope += r * wn * ((nf + e) * q + 1.0);
+            wn *= w;
+            if wn == 0.0 || (n > 0 && term.abs() <= SERIES_TOL * sum.abs()) {
+                break;
+            }
+            da += log_slope(a + nf, e);
+            db += log_slope(b + nf, e);
+            dn += log_slope(nf + 1.0 - e, 2.0 * e);
+            r *= (a + nf) * (b + nf) / ((nf + 1.0) * (nf + 1.0 - e));
+        }
+        (k.prefactor * sum, k.prefactor * z * slope)
+    }
+}
+
+/// 2F1(a, b; a + b + e; z) alone (see [`Hyp2f1`]).
 pub(crate) fn hyp2f1(a: f64, b: f64, e: f64, z: f64, one_minus_z: f64, ln_one_minus_z: f64) -> f64 {
-    if z <= 0.5 {
-        hyp2f1_series(a, b, a + b + e, z)
-    } else {
-        hyp2f1_near_one(a, b, e, one_minus_z, ln_one_minus_z)
-    }
+    Hyp2f1::new(a, b, e).eval(z, one_minus_z, ln_one_minus_z).0
 }
 
 /// Largest |w| (resp. |1 - w|) where [`lerch_phi1`] sums its series about 0 (resp. 1):
@@ -284,8 +351,9 @@ mod tests {
         ] {
             for z in [0.5, 0.6, 0.8] {
                 let w: f64 = 1.0 - z;
-                let direct = hyp2f1_series(a, b, a + b + e, z);
-                let near = hyp2f1_near_one(a, b, e, w, w.ln());
+                let f = Hyp2f1::new(a, b, e);
+                let direct = f.series(z).0;
+                let near = f.near_one(z, w, w.ln()).0;
                 assert!(
                     (near / direct - 1.0).abs() < 1e-14,
                     "{a} {b} {e} {z}: {near} {direct}"
@@ -293,9 +361,48 @@ mod tests {
             }
         }
         let w: f64 = 1e-3;
-        let log_case = hyp2f1_near_one(0.5, 0.5, 0.0, w, w.ln());
-        let nearly = hyp2f1_near_one(0.5 - 1e-10, 0.5, 1e-10, w, w.ln());
+        let log_case = Hyp2f1::new(0.5, 0.5, 0.0).near_one(1.0 - w, w, w.ln()).0;
+        let nearly = Hyp2f1::new(0.5 - 1e-10, 0.5, 1e-10)
+            .near_one(1.0 - w, w, w.ln())
+            .0;
         assert!((nearly / log_case - 1.0).abs() < 1e-9);
+    }
+
+    /// dF/ds = z (1 - z) F'(z) on both branches: for 2F1(1/2, 1/2; 1; m) = (2/pi) K(m) it is
+    /// (E(m) - (1 - m) K(m)) / pi (DLMF 19.4.1; `ellip`'s K and E take the parameter m), and in
+    /// general z (1 - z) (ab/c) 2F1(a + 1, b + 1; c + 1; z) (DLMF 15.5.1), summed directly.
+    #[test]
+    fn hypergeometric_slopes() {
+        let f = Hyp2f1::new(0.5, 0.5, 0.0);
+        for m in [0.01, 0.2, 0.5, 0.7, 0.95, 1.0 - 1e-9] {
+            let (k, e) = (ellip::ellipk(m).unwrap(), ellip::ellipe(m).unwrap());
+            let (value, slope) = f.eval(m, 1.0 - m, (1.0 - m).ln());
+            assert!(rel(value, 2.0 / PI * k) < 1e-14, "m {m}: {value}");
+            let exact = (e - (1.0 - m) * k) / PI;
+            assert!(rel(slope, exact) < 1e-13, "m {m}: {slope} vs {exact}");
+        }
+        for (a, b, e) in [
+            (0.3, 0.5, 0.2),
+            (0.5, 0.7, 0.0),
+            (0.01, 0.5, 0.49),
+            (0.45, 0.5, 0.05),
+        ] {
+            let c = a + b + e;
+            for z in [1e-6f64, 0.1, 0.45, 0.55, 0.8] {
+                let (mut t, mut sum) = (1.0, 1.0);
+                for n in 0..3000 {
+                    let n = n as f64;
+                    t *= (a + 1.0 + n) * (b + 1.0 + n) / ((c + 1.0 + n) * (n + 1.0)) * z;
+                    sum += t;
+                }
+                let exact = z * (1.0 - z) * a * b / c * sum;
+                let slope = Hyp2f1::new(a, b, e).eval(z, 1.0 - z, (1.0 - z).ln()).1;
+                assert!(
+                    rel(slope, exact) < 1e-13,
+                    "{a} {b} {e} {z}: {slope} vs {exact}"
+                );
+            }
+        }
     }
 
     /// 2F1(1, a; 1 + a; z) = a sum z^k / (a + k) (DLMF 15.2.1 with (1)_k = k!), and for z > 1
@@ -304,7 +411,7 @@ mod tests {
     #[test]
     fn logarithmic_case_beyond_one() {
         let a: f64 = 0.37;
-        for z in [-0.45f64, 0.3] {
+        for z in [-0.45f64, 0.3, 0.6, 0.9] {
             let direct: f64 = (0..400).map(|k| a * z.powi(k) / (a + k as f64)).sum();
             assert!(rel(hyp2f1(1.0, a, 0.0, z, 1.0 - z, (1.0 - z).ln()), direct) < 1e-15);
         }

@@ -40,7 +40,9 @@ pub fn solve(k: &Coupling) -> Result<SpenceSolution> {
     k.validate()?;
     let h = (k.bp * k.mu).atan() / PI;
     let g = 0.5 - h;
-    let norm = (ln_gamma(1.5 - g) - 0.5 * PI.ln() - ln_gamma(1.0 - g)).exp();
+    // ln B(1/2 + h, 1/2) = -ln N
+    let ln_beta = ln_gamma(0.5 + h) + 0.5 * PI.ln() - ln_gamma(1.0 + h);
+    let norm = (-ln_beta).exp();
     let mut sol = SpenceSolution {
         coupling: *k,
         g,
@@ -52,7 +54,7 @@ pub fn solve(k: &Coupling) -> Result<SpenceSolution> {
     if k.mu == 0.0 {
         return Ok(sol);
     }
-    let (s, ds) = Compatibility::new(k.bq, k.mu, h).root()?;
+    let (s, ds) = Compatibility::new(k.bq, k.mu, h, ln_beta).root()?;
     let v = Split::new(s);
     let c = (0.5 * v.ln_m).exp();
     sol.edge = StickEdge {

@@ -66,8 +66,8 @@ fn steel() -> f64 {
 #[test]
 fn compatibility_sides_match_quadrature() {
     for h in [0.0, 1e-9, 0.03, 0.25, 0.49] {
-        let comp = Compatibility::new(1.0, 1.0, h);
         let ln_beta = ln_gamma(0.5 + h) + 0.5 * PI.ln() - ln_gamma(1.0 + h);
+        let comp = Compatibility::new(1.0, 1.0, h, ln_beta);
         // c exactly representable, so that the quadrature sees the same c as the series.
         for c in [
             1e-9,
@@ -86,7 +86,7 @@ fn compatibility_sides_match_quadrature() {
                 ln_m: 2.0 * c.ln(),
                 ln_m1: m1.ln(),
             };
-            let (fl, fr) = comp.factors(&v);
+            let ((fl, _), (fr, _)) = comp.factors(&v);
             let left = 0.5 * PI * fl;
             let right = 0.5 * (ln_beta + h * v.ln_m1).exp() * fr;
             let (ql, qr) = (
@@ -102,6 +102,31 @@ fn compatibility_sides_match_quadrature() {
                 "h {h} c {c}: right {right} vs {qr}"
             );
         }
+    }
+}
+
+/// The root c found by Newton's method satisfies the compatibility condition with both sides
+/// by quadrature: bq int_0^c p / sqrt(c^2 - x^2) = mu int_c^1 p / sqrt(t^2 - c^2).
+#[test]
+fn root_satisfies_compatibility_by_quadrature() {
+    for (bp, bq, mu) in [
+        (steel(), steel(), 0.1),
+        (steel(), steel(), 0.3),
+        (steel(), steel(), 1.0),
+        (0.162, 0.68, 0.3),
+        (0.9, 0.9, 3.0),
+        (0.03, 3.2, 1.0),
+        (0.5, 0.1, 0.05),
+    ] {
+        let s = solve(&Coupling { bp, bq, mu }).unwrap();
+        let (g, e) = (s.edge_exponent(), s.edge());
+        let left = bq * left_integral(g, e.c, e.one_minus_c);
+        let right = mu * right_integral(g, e.c);
+        assert!(
+            (left / right - 1.0).abs() < 1e-13,
+            "bp {bp} bq {bq} mu {mu}: c = {}, {left} vs {right}",
+            e.c
+        );
     }
 }
 
