@@ -1,7 +1,8 @@
 //! Speed against accuracy: every method at every resolution it offers, on a fixed set of
 //! scenes, timed per solve and compared with a high-accuracy COUPLED solution computed in the
 //! same run (error in c, and max traction error on |x| <= 0.99); AUTO at the default tolerance
-//! is timed too, its row named for the method it chose.
+//! is timed too, its row named for the method it chose, and "C ALONE": COUPLED asked for c
+//! only (traction tolerance +infinity).
 //!
 //! Run: `cargo run --release --example speed_accuracy` (one core is enough; ~6 minutes;
 //! writes docs/speed_accuracy.csv, docs/speed_accuracy_medians.md and
@@ -180,6 +181,14 @@ fn measure(quick: bool, only: Option<&str>) -> Result<Vec<Row>, Box<dyn std::err
                 record("COUPLED", format!("tol {tol:.0e}"), t, &s);
             }
         }
+        // c alone: COUPLED with a traction tolerance of +infinity
+        for tol in [1e-6, 1e-8, 1e-10] {
+            if wanted("C ALONE")
+                && let Some((t, s)) = time_solve(|| coupled::solve_to(&k, tol, f64::INFINITY))
+            {
+                record("C ALONE", format!("tol {tol:.0e}"), t, &s);
+            }
+        }
         let max_n = if !wanted("LCP") {
             0
         } else if quick {
@@ -222,7 +231,7 @@ fn write_csv(rows: &[Row]) -> std::io::Result<()> {
 
 /// Rows from a CSV written by [`write_csv`] (scene names are quoted and contain commas).
 fn read_csv(text: &str) -> Result<Vec<Row>, Box<dyn std::error::Error>> {
-    let methods = ["AUTO", "GOODMAN", "SPENCE", "COUPLED", "LCP"];
+    let methods = ["AUTO", "GOODMAN", "SPENCE", "COUPLED", "C ALONE", "LCP"];
     let mut rows = Vec::new();
     for line in text.lines().skip(1) {
         let (scene, rest) = line[1..].split_once("\",").ok_or("bad CSV line")?;
@@ -303,7 +312,7 @@ fn report(rows: &[Row], write: bool) -> Result<(), Box<dyn std::error::Error>> {
     // Chart: median error in c against median time per solve, one series per method
     // (its resolutions joined), and the Pareto front of those medians.
     let mut series: Vec<Series> = Vec::new();
-    for method in ["GOODMAN", "SPENCE", "LCP", "COUPLED"] {
+    for method in ["GOODMAN", "SPENCE", "LCP", "COUPLED", "C ALONE"] {
         let pts: Vec<(f64, f64)> = medians
             .iter()
             .filter(|m| m.0 == method)
