@@ -9,15 +9,15 @@
 //! - near (rho < [`NEAR_RHO`]): closed form and recurrence ([`near_transforms`]);
 //! - far: the Gauss-Jacobi rule of each family for the band of rho it lies in, sized from the
 //!   family's own coefficients so that its error (~|c_k| rho^(k - 2m) for degree k and m
-//!   nodes) stays below [`FAR_TOL`] of the tractions' scale ([`band_nodes`]). With
+//!   nodes) stays below [`FAR_TOL`] of p(0) ([`band_nodes`]). With
 //!   Re z >= 0 the mirror panel is farther than the panel itself, so one rule serves both:
 //!   1/(z - x) + 1/(z + x) = 2z / ((z - x)(z + x)) for p, 1/(z - x) - 1/(z + x) =
 //!   2x / ((z - x)(z + x)) for q (Re z < 0 follows from G_p odd, G_q even). Several points
 //!   (the two characteristic roots' x + i beta_k y) share one pass over the rule of the
 //!   nearest one's band, so that their transforms also share its (smooth) error.
 //!
-//! The families' series are taken without the tail that adds up to less than [`FAR_TOL`] of
-//! that scale (the rounding noise of sampled series): [`NearFamily::new`].
+//! The families' series are taken without the tail that adds up to less than [`TAIL_TOL`] of
+//! p(0) (the rounding noise of sampled series): [`NearFamily::new`].
 //!
 //! Points far from the whole contact (|z| >= [`FAR_RADIUS`]) skip the panels: there
 //! G_p(z) = (1/pi) sum_j M_2j / z^(2j+1) and G_q(z) = (1/pi) sum_j M_(2j+1) / z^(2j+2) with the
@@ -60,11 +60,14 @@ const MOMENTS: usize = 100;
 /// Largest degree of a family the kernel takes (scratch on the stack).
 pub(crate) const MAX_DEGREE: usize = 72;
 
-/// Error allowed to each family's far rule, relative to the tractions' scale (the largest
-/// coefficient of the expansion, ~p(0)): far below the near field's recurrence error
-/// (~4e-12, [`NEAR_RHO`]) and the field's 1e-8 target, and above the rounding noise that
-/// sampled series carry in their tails (~1e-16 per coefficient).
-const FAR_TOL: f64 = 1e-14;
+/// Error allowed to each family's far rule, relative to p(0): far below the field's 1e-8
+/// target and the near field's own recurrence error (~4e-12 of the transforms, [`NEAR_RHO`]).
+const FAR_TOL: f64 = 1e-13;
+
+/// The part of each family's series left out, relative to p(0) ([`NearFamily::new`]): the
+/// rounding noise that sampled series carry in their tails, and no more (the stresses next
+/// to a punch edge, ~p(0) / sqrt(depth), keep their relative accuracy).
+const TAIL_TOL: f64 = 1e-14;
 
 /// Nodes of a Gauss rule for a family whose p and q series have coefficients of size at most
 /// `size[k]` (the rule serves both), at rho >= rho_min: the fewest m with
@@ -330,10 +333,15 @@ fn rule(rules: &mut Rules, weight: Weight, m: usize) -> &(Vec<f64>, Vec<f64>) {
 }
 
 impl KernelPanel {
-    /// The panel [a, b] with its families, far rules to `tol` ([`band_nodes`]).
-    fn new(a: f64, b: f64, families: &[Family], tol: f64, rules: &mut Rules) -> Self {
+    /// The panel [a, b] with its families, for tractions of scale p0 = p(0): their series
+    /// without a tail of TAIL_TOL p0, far rules to FAR_TOL p0 ([`band_nodes`]).
+    fn new(a: f64, b: f64, families: &[Family], p0: f64, rules: &mut Rules) -> Self {
         let (m, h) = (0.5 * (a + b), 0.5 * (b - a));
-        let near: Vec<NearFamily> = families.iter().map(|f| NearFamily::new(f, tol)).collect();
+        let near: Vec<NearFamily> = families
+            .iter()
+            .map(|f| NearFamily::new(f, TAIL_TOL * p0))
+            .collect();
+        let tol = FAR_TOL * p0;
         let far = BANDS
             .iter()
             .map(|&rho| {
@@ -614,16 +622,11 @@ impl Kernel {
     /// Prepares an expansion's panels.
     pub(crate) fn new(e: &Expansion) -> Self {
         let mut rules = Rules::new();
-        let scale = e
-            .panels
-            .iter()
-            .flat_map(|p| &p.families)
-            .flat_map(|f| f.p.iter().chain(&f.q))
-            .fold(0.0f64, |m, c| m.max(c.abs()));
+        let p0 = e.tractions(0.0).0;
         let panels: Vec<KernelPanel> = e
             .panels
             .iter()
-            .map(|p| KernelPanel::new(p.a, p.b, &p.families, FAR_TOL * scale, &mut rules))
+            .map(|p| KernelPanel::new(p.a, p.b, &p.families, p0, &mut rules))
             .collect();
         // the moments, from each family's rule exact for degree n + MOMENTS, doubled for the
         // mirror half
