@@ -73,7 +73,7 @@ const TAIL_TOL: f64 = 1e-14;
 /// `size[k]` (the rule serves both), at rho >= rho_min: the fewest m with
 /// sum_k size[k] min(1, rho^(k - 2m)) <= tol (an m-node rule integrates P_k / (z - t) with
 /// error ~rho^(k - 2m) while k < 2m, and O(1) beyond), so that a decaying series needs fewer
-/// nodes than its length.
+/// nodes than its length; at most the m with rho^(n - 2m) <= 1e-16 for the whole series.
 fn band_nodes(rho_min: f64, size: &[f64], tol: f64) -> usize {
     let error = |m: usize| -> f64 {
         size.iter()
@@ -81,7 +81,8 @@ fn band_nodes(rho_min: f64, size: &[f64], tol: f64) -> usize {
             .map(|(k, s)| s * rho_min.powf((k as f64 - 2.0 * m as f64).min(0.0)))
             .sum()
     };
-    (1..).find(|&m| error(m) <= tol).unwrap_or(1)
+    let exact = ((size.len() as f64 + 16.0 / rho_min.log10()) / 2.0).ceil() as usize;
+    (1..exact).find(|&m| error(m) <= tol).unwrap_or(exact)
 }
 
 /// Depth standing in for a point exactly at a panel end on the axis: the point is taken this
