@@ -135,28 +135,43 @@ fn graded(h: f64, limit: f64) -> Vec<f64> {
 
 /// Legendre coefficients of f(t) on [-1, 1] from its values at Gauss-Legendre nodes (exact
 /// for polynomials of degree < n), at the lowest order of [`ORDERS`] whose tail is below
-/// [`TAIL`] (the highest otherwise).
+/// [`TAIL`] times its largest coefficient, or else at the last order before the tail stopped
+/// halving: it has then reached the rounding noise of the samples (the functions fitted are
+/// polynomials, or analytic at least a panel width beyond their panel, whose uncorrupted
+/// tails shrink by far more than 2 from one order to the next). The highest order otherwise.
 pub(crate) fn fit(f: impl Fn(f64) -> f64) -> Vec<f64> {
-    let mut coef = Vec::new();
+    let mut last: Option<(Vec<f64>, f64)> = None;
     for n in ORDERS {
-        let (nodes, weights) = gauss_legendre(n);
-        let mut leg = vec![0.0; n];
-        coef = vec![0.0; n];
-        for (&t, &w) in nodes.iter().zip(&weights) {
-            let v = f(t) * w;
-            legendre(t, &mut leg);
-            for (c, l) in coef.iter_mut().zip(&leg) {
-                *c += v * l;
-            }
-        }
-        for (k, c) in coef.iter_mut().enumerate() {
-            *c *= k as f64 + 0.5;
-        }
+        let coef = legendre_coefficients(&f, n);
         let top = coef.iter().fold(0.0f64, |m, c| m.max(c.abs()));
         let tail = coef[n - 3..].iter().fold(0.0f64, |m, c| m.max(c.abs()));
         if tail <= TAIL * top {
-            break;
+            return coef;
         }
+        if let Some((previous, previous_tail)) = last.take()
+            && tail > 0.5 * previous_tail
+        {
+            return previous;
+        }
+        last = Some((coef, tail));
+    }
+    last.map(|(coef, _)| coef).unwrap_or_default()
+}
+
+/// The first n Legendre coefficients of f by the n-point Gauss-Legendre rule.
+fn legendre_coefficients(f: impl Fn(f64) -> f64, n: usize) -> Vec<f64> {
+    let (nodes, weights) = gauss_legendre(n);
+    let mut leg = vec![0.0; n];
+    let mut coef = vec![0.0; n];
+    for (&t, &w) in nodes.iter().zip(&weights) {
+        let v = f(t) * w;
+        legendre(t, &mut leg);
+        for (c, l) in coef.iter_mut().zip(&leg) {
+            *c += v * l;
+        }
+    }
+    for (k, c) in coef.iter_mut().enumerate() {
+        *c *= k as f64 + 0.5;
     }
     coef
 }

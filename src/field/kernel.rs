@@ -7,11 +7,17 @@
 //! Each panel's transform is taken, by the Bernstein parameter rho of z with respect to the
 //! panel (rho + 1/rho = (|z - a| + |z - b|) / h):
 //! - near (rho < [`NEAR_RHO`]): closed form and recurrence ([`near_transforms`]);
-//! - far: the Gauss-Jacobi rule of each family for the band of rho it lies in, sized so that
-//!   the rule is exact to ~1e-16 (error ~ rho^(n - 2m) for degree n and m nodes). With
+//! - far: the Gauss-Jacobi rule of each family for the band of rho it lies in, sized from the
+//!   family's own coefficients so that its error (~|c_k| rho^(k - 2m) for degree k and m
+//!   nodes) stays below [`FAR_TOL`] of p(0) ([`band_nodes`]). With
 //!   Re z >= 0 the mirror panel is farther than the panel itself, so one rule serves both:
 //!   1/(z - x) + 1/(z + x) = 2z / ((z - x)(z + x)) for p, 1/(z - x) - 1/(z + x) =
-//!   2x / ((z - x)(z + x)) for q (Re z < 0 follows from G_p odd, G_q even).
+//!   2x / ((z - x)(z + x)) for q (Re z < 0 follows from G_p odd, G_q even). Several points
+//!   (the two characteristic roots' x + i beta_k y) share one pass over the rule of the
+//!   nearest one's band, so that their transforms also share its (smooth) error.
+//!
+//! The families' series are taken without the tail that adds up to less than [`TAIL_TOL`] of
+//! p(0) (the rounding noise of sampled series): [`NearFamily::new`].
 //!
 //! Points far from the whole contact (|z| >= [`FAR_RADIUS`]) skip the panels: there
 //! G_p(z) = (1/pi) sum_j M_2j / z^(2j+1) and G_q(z) = (1/pi) sum_j M_(2j+1) / z^(2j+2) with the
@@ -35,6 +41,18 @@ const BANDS: [f64; 13] = [
     NEAR_RHO, 1.75, 2.0, 2.5, 3.0, 4.0, 5.0, 7.0, 10.0, 20.0, 50.0, 200.0, 1000.0,
 ];
 
+/// The bands' lower ends as the semi-major axis s = (rho + 1/rho) / 2 of their ellipse, to
+/// which a point's distances to the panel ends give it directly ([`KernelPanel::band`]).
+const BAND_AXES: [f64; BANDS.len()] = {
+    let mut s = [0.0; BANDS.len()];
+    let mut i = 0;
+    while i < s.len() {
+        s[i] = 0.5 * (BANDS[i] + 1.0 / BANDS[i]);
+        i += 1;
+    }
+    s
+};
+
 /// |z| from which the moment series is used, and its length: FAR_RADIUS^(-MOMENTS) ~ 2e-18.
 const FAR_RADIUS: f64 = 1.5;
 const MOMENTS: usize = 100;
@@ -42,9 +60,29 @@ const MOMENTS: usize = 100;
 /// Largest degree of a family the kernel takes (scratch on the stack).
 pub(crate) const MAX_DEGREE: usize = 72;
 
-/// Nodes of a Gauss rule exact to ~1e-16 for degree-n densities when rho >= rho_min.
-fn band_nodes(rho_min: f64, n: usize) -> usize {
-    ((n as f64 + 16.0 / rho_min.log10()) / 2.0).ceil() as usize
+/// Error allowed to each family's far rule, relative to p(0): far below the field's 1e-8
+/// target and the near field's own recurrence error (~4e-12 of the transforms, [`NEAR_RHO`]).
+const FAR_TOL: f64 = 1e-13;
+
+/// The part of each family's series left out, relative to p(0) ([`NearFamily::new`]): the
+/// rounding noise that sampled series carry in their tails, and no more (the stresses next
+/// to a punch edge, ~p(0) / sqrt(depth), keep their relative accuracy).
+const TAIL_TOL: f64 = 1e-14;
+
+/// Nodes of a Gauss rule for a family whose p and q series have coefficients of size at most
+/// `size[k]` (the rule serves both), at rho >= rho_min: the fewest m with
+/// sum_k size[k] min(1, rho^(k - 2m)) <= tol (an m-node rule integrates P_k / (z - t) with
+/// error ~rho^(k - 2m) while k < 2m, and O(1) beyond), so that a decaying series needs fewer
+/// nodes than its length; at most the m with rho^(n - 2m) <= 1e-16 for the whole series.
+fn band_nodes(rho_min: f64, size: &[f64], tol: f64) -> usize {
+    let error = |m: usize| -> f64 {
+        size.iter()
+            .enumerate()
+            .map(|(k, s)| s * rho_min.powf((k as f64 - 2.0 * m as f64).min(0.0)))
+            .sum()
+    };
+    let exact = ((size.len() as f64 + 16.0 / rho_min.log10()) / 2.0).ceil() as usize;
+    (1..exact).find(|&m| error(m) <= tol).unwrap_or(exact)
 }
 
 /// Depth standing in for a point exactly at a panel end on the axis: the point is taken this
@@ -61,6 +99,40 @@ struct NearFamily {
     q: Vec<f64>,
     /// M_k = int w P_k, for max(p.len(), q.len()) degrees.
     moments: Vec<f64>,
+}
+
+impl NearFamily {
+    /// The family `f` without the tail of its series whose sizes ([`size`]) add up
+    /// to at most `tol`: as |P_k| <= 1, that moves p and q by at most `tol` times the weight
+    /// (the rounding noise of sampled series, whose tails need not decay below it).
+    fn new(f: &Family, tol: f64) -> Self {
+        let mut n = f.p.len().max(f.q.len()).max(1);
+        let mut tail = 0.0;
+        while n > 1 && tail + size(&f.p, &f.q, n - 1) <= tol {
+            tail += size(&f.p, &f.q, n - 1);
+            n -= 1;
+        }
+        let cut = |v: &[f64]| v[..v.len().min(n)].to_vec();
+        NearFamily {
+            weight: f.weight,
+            p: cut(&f.p),
+            q: cut(&f.q),
+            moments: f.weight.moments(n),
+        }
+    }
+
+    /// The sizes of its coefficients ([`size`]).
+    fn sizes(&self) -> Vec<f64> {
+        (0..self.moments.len())
+            .map(|k| size(&self.p, &self.q, k))
+            .collect()
+    }
+}
+
+/// max(|p_k|, |q_k|) (0 beyond a series' end): the size of a family's degree-k terms.
+fn size(p: &[f64], q: &[f64], k: usize) -> f64 {
+    let c = |v: &[f64]| v.get(k).map_or(0.0, |c: &f64| c.abs());
+    c(p).max(c(q))
 }
 
 /// A far-field rule of one panel: physical nodes x_j and the weights h W_j p(t_j) / w(t_j)
@@ -262,27 +334,23 @@ fn rule(rules: &mut Rules, weight: Weight, m: usize) -> &(Vec<f64>, Vec<f64>) {
 }
 
 impl KernelPanel {
-    fn new(a: f64, b: f64, families: &[Family], rules: &mut Rules) -> Self {
+    /// The panel [a, b] with its families, for tractions of scale p0 = p(0): their series
+    /// without a tail of TAIL_TOL p0, far rules to FAR_TOL p0 ([`band_nodes`]).
+    fn new(a: f64, b: f64, families: &[Family], p0: f64, rules: &mut Rules) -> Self {
         let (m, h) = (0.5 * (a + b), 0.5 * (b - a));
         let near: Vec<NearFamily> = families
             .iter()
-            .map(|f| {
-                let n = f.p.len().max(f.q.len()).max(1);
-                NearFamily {
-                    weight: f.weight,
-                    p: f.p.clone(),
-                    q: f.q.clone(),
-                    moments: f.weight.moments(n),
-                }
-            })
+            .map(|f| NearFamily::new(f, TAIL_TOL * p0))
             .collect();
+        let tol = FAR_TOL * p0;
         let far = BANDS
             .iter()
             .map(|&rho| {
                 let mut r = FarRule::default();
                 for f in &near {
                     let n = f.moments.len();
-                    let (nodes, weights) = rule(rules, f.weight, band_nodes(rho, n));
+                    let nodes = band_nodes(rho, &f.sizes(), tol);
+                    let (nodes, weights) = rule(rules, f.weight, nodes);
                     let mut leg = vec![0.0; n];
                     for (&t, &w) in nodes.iter().zip(weights) {
                         legendre(t, &mut leg);
@@ -328,7 +396,7 @@ impl KernelPanel {
             x,
             w: C64::new(0.0, -0.0),
         };
-        match KernelPanel::band(self.rho(z.z())) {
+        match self.band(z.z()) {
             Some(b) => {
                 let r = &self.far[b];
                 let nodes = r.x.iter().zip(&r.wq);
@@ -355,17 +423,13 @@ impl KernelPanel {
         }
     }
 
-    /// Bernstein parameter of z for this panel (distances by sqrt, not the slower hypot of
-    /// `norm`: z is never near overflow here).
-    fn rho(&self, z: C64) -> f64 {
+    /// The far band of z for this panel (None: near field), by the semi-major axis
+    /// s = (|z - a| + |z - b|) / (2h) = (rho + 1/rho) / 2 of its Bernstein ellipse (distances by
+    /// sqrt, not the slower hypot of `norm`: z is never near overflow here).
+    fn band(&self, z: C64) -> Option<usize> {
         let dist = |e: f64| ((z.re - e) * (z.re - e) + z.im * z.im).sqrt();
         let s = (dist(self.a) + dist(self.b)) / (2.0 * self.h);
-        s + (s * s - 1.0).max(0.0).sqrt()
-    }
-
-    /// The far band of rho (None: near field).
-    fn band(rho: f64) -> Option<usize> {
-        BANDS.iter().rposition(|&lo| rho >= lo)
+        BAND_AXES.iter().rposition(|&lo| s >= lo)
     }
 
     /// The local point of z, the distances to the ends from the physical ones, (b - x) - w
@@ -442,89 +506,128 @@ impl KernelPanel {
         t
     }
 
-    /// This panel and its mirror by one far rule (Re z >= 0, the mirror farther):
+    /// This panel and its mirror by one far rule at each of the points z (Re z >= 0, the
+    /// mirror farther; `band` suits them all), in one pass over the rule's nodes:
     /// pi (g_p(z) - g_p(-z)) = 2z sum wp / ((z - x)(z + x)),
     /// pi (g_q(z) + g_q(-z)) = 2 sum wq x / ((z - x)(z + x)).
     /// With (z - x)(z + x) = u - i v, u = (Re z - x)(Re z + x) - (Im z)^2 and v = -2 Re z Im z
     /// the same for every node, 1 / ((z - x)(z + x)) = (u + i v) r with r = 1 / (u^2 + v^2),
     /// so the sums are real ones ([`FarSums`]), taken in lanes the compiler vectorises.
-    fn far_pair(&self, z: C64, band: usize, deriv: bool, t: &mut Transforms) {
+    fn far_pair<const N: usize>(
+        &self,
+        z: [C64; N],
+        band: usize,
+        deriv: bool,
+        t: &mut [Transforms; N],
+    ) {
         let r = &self.far[band];
-        let v = -2.0 * z.re * z.im;
-        let s = FarSums::new(&r.x, &r.wp, &r.wqx, z, v, deriv);
-        let sp = C64::new(s.p[0], v * s.p[1]);
-        let sq = C64::new(s.q[0], v * s.q[1]);
-        t.p += z * sp * 2.0;
-        t.q += sq * 2.0;
-        if deriv {
-            // 1 / ((z - x)(z + x))^2 = (u^2 - v^2 + 2 i u v) r^2
-            let sp2 = C64::new(s.p[2] - v * v * s.p[3], 2.0 * v * s.p[4]);
-            let sq2 = C64::new(s.q[2] - v * v * s.q[3], 2.0 * v * s.q[4]);
-            // d/dz 2z/(z^2 - x^2) = 2/(z^2 - x^2) - 4 z^2/(z^2 - x^2)^2; 2x/(...) gives -4xz/(...)^2
-            t.dp += sp * 2.0 - z * z * sp2 * 4.0;
-            t.dq -= z * sq2 * 4.0;
+        let sums = if deriv {
+            FarSums::new::<true>(&r.x, &r.wp, &r.wqx, z)
+        } else {
+            FarSums::new::<false>(&r.x, &r.wp, &r.wqx, z)
+        };
+        for ((t, s), z) in t.iter_mut().zip(&sums.0).zip(z) {
+            let v = -2.0 * z.re * z.im;
+            let sp = C64::new(s.p[0], v * s.p[1]);
+            let sq = C64::new(s.q[0], v * s.q[1]);
+            t.p += z * sp * 2.0;
+            t.q += sq * 2.0;
+            if deriv {
+                // 1 / ((z - x)(z + x))^2 = (u^2 - v^2 + 2 i u v) r^2
+                let sp2 = C64::new(s.p[2] - v * v * s.p[3], 2.0 * v * s.p[4]);
+                let sq2 = C64::new(s.q[2] - v * v * s.q[3], 2.0 * v * s.q[4]);
+                // d/dz 2z/(z^2 - x^2) = 2/(z^2 - x^2) - 4 z^2/(z^2 - x^2)^2; 2x/(...) gives
+                // -4xz/(...)^2
+                t.dp += sp * 2.0 - z * z * sp2 * 4.0;
+                t.dq -= z * sq2 * 4.0;
+            }
         }
     }
 }
 
-/// Lanes of the far-rule sums (independent accumulators, so that the compiler can vectorise).
+/// Lanes of the far-rule dot products ([`dot`]).
 const LANES: usize = 4;
 
-/// The real sums of [`KernelPanel::far_pair`] over the nodes, for the weights wp and wq x:
-/// sum w u r, sum w r and, for the derivatives, sum w u^2 r^2, sum w r^2, sum w u r^2.
-struct FarSums {
+/// The real sums of [`KernelPanel::far_pair`] over the nodes for one point, for the weights
+/// wp and wq x: sum w u r, sum w r and, for the derivatives, sum w u^2 r^2, sum w r^2,
+/// sum w u r^2.
+#[derive(Clone, Copy, Default)]
+struct PointSums {
     p: [f64; 5],
     q: [f64; 5],
 }
 
-impl FarSums {
-    fn new(x: &[f64], wp: &[f64], wq: &[f64], z: C64, v: f64, deriv: bool) -> Self {
-        let (zr, v2) = (z.re, z.im * z.im);
-        let vv = v * v;
-        let mut acc = [[[0.0; LANES]; 5]; 2];
-        let mut add = |l: usize, x: f64, wp: f64, wq: f64| {
-            let u = (zr - x) * (zr + x) - v2;
-            let r = 1.0 / (u * u + vv);
-            let (ur, uur) = (u * r, u * r * u * r);
-            for (acc, w) in acc.iter_mut().zip([wp, wq]) {
-                acc[0][l] += w * ur;
-                acc[1][l] += w * r;
-                if deriv {
-                    acc[2][l] += w * uur;
-                    acc[3][l] += w * r * r;
-                    acc[4][l] += w * ur * r;
+/// [`PointSums`] of N points, from one pass over the nodes.
+struct FarSums<const N: usize>([PointSums; N]);
+
+impl<const N: usize> FarSums<N> {
+    /// The sums over nodes x with weights wp, wq, block by block: first the per-node factors
+    /// r and u r of each point (elementwise, so vectorised), then their dot products with the
+    /// weights ([`dot`]).
+    fn new<const DERIV: bool>(x: &[f64], wp: &[f64], wq: &[f64], z: [C64; N]) -> Self {
+        let mut sums = [PointSums::default(); N];
+        for ((x, wp), wq) in x.chunks(BLOCK).zip(wp.chunks(BLOCK)).zip(wq.chunks(BLOCK)) {
+            for (s, z) in sums.iter_mut().zip(&z) {
+                // (z - x)(z + x) = u - i v, v = -2 Re z Im z
+                let v = -2.0 * z.re * z.im;
+                let (v2, vv) = (z.im * z.im, v * v);
+                let (mut r, mut ur) = ([0.0; BLOCK], [0.0; BLOCK]);
+                for ((r, ur), &x) in r.iter_mut().zip(&mut ur).zip(x) {
+                    let u = (z.re - x) * (z.re + x) - v2;
+                    *r = 1.0 / (u * u + vv);
+                    *ur = u * *r;
+                }
+                let (r, ur) = (&r[..x.len()], &ur[..x.len()]);
+                for (s, w) in [&mut s.p, &mut s.q].into_iter().zip([wp, wq]) {
+                    s[0] += dot(w, ur, None);
+                    s[1] += dot(w, r, None);
+                    if DERIV {
+                        s[2] += dot(w, ur, Some(ur));
+                        s[3] += dot(w, r, Some(r));
+                        s[4] += dot(w, ur, Some(r));
+                    }
                 }
             }
-        };
-        let n = x.len() / LANES * LANES;
-        for ((x, wp), wq) in x[..n]
-            .chunks_exact(LANES)
-            .zip(wp.chunks_exact(LANES))
-            .zip(wq.chunks_exact(LANES))
-        {
-            for l in 0..LANES {
-                add(l, x[l], wp[l], wq[l]);
-            }
         }
-        for j in n..x.len() {
-            add(0, x[j], wp[j], wq[j]);
-        }
-        let total = |a: &[[f64; LANES]; 5]| a.map(|lanes| lanes.iter().sum::<f64>());
-        FarSums {
-            p: total(&acc[0]),
-            q: total(&acc[1]),
-        }
+        FarSums(sums)
     }
+}
+
+/// Nodes per block of [`FarSums::new`] (its per-node factors live on the stack).
+const BLOCK: usize = 32;
+
+/// sum_j w_j a_j b_j, in [`LANES`] independent accumulators (so that the compiler can
+/// vectorise it); `b` all ones when None.
+#[inline(always)]
+fn dot(w: &[f64], a: &[f64], b: Option<&[f64]>) -> f64 {
+    let mut acc = [0.0; LANES];
+    let chunks = w.chunks_exact(LANES).zip(a.chunks_exact(LANES));
+    match b {
+        None => chunks.for_each(|(w, a)| {
+            for l in 0..LANES {
+                acc[l] += w[l] * a[l];
+            }
+        }),
+        Some(b) => chunks.zip(b.chunks_exact(LANES)).for_each(|((w, a), b)| {
+            for l in 0..LANES {
+                acc[l] += w[l] * a[l] * b[l];
+            }
+        }),
+    }
+    let n = w.len() / LANES * LANES;
+    let rest = (n..w.len()).map(|j| w[j] * a[j] * b.map_or(1.0, |b| b[j]));
+    acc.iter().sum::<f64>() + rest.sum::<f64>()
 }
 
 impl Kernel {
     /// Prepares an expansion's panels.
     pub(crate) fn new(e: &Expansion) -> Self {
         let mut rules = Rules::new();
+        let p0 = e.tractions(0.0).0;
         let panels: Vec<KernelPanel> = e
             .panels
             .iter()
-            .map(|p| KernelPanel::new(p.a, p.b, &p.families, &mut rules))
+            .map(|p| KernelPanel::new(p.a, p.b, &p.families, p0, &mut rules))
             .collect();
         // the moments, from each family's rule exact for degree n + MOMENTS, doubled for the
         // mirror half
@@ -604,56 +707,81 @@ impl Kernel {
             .sum()
     }
 
-    /// G_p(z), G_q(z) and, when `deriv`, G_p'(z), G_q'(z), for z off the segment [-1, 1] or
-    /// on it (the limit from below when Im z = -0.0).
-    pub(crate) fn transforms(&self, z: Point, deriv: bool) -> Transforms {
-        if z.z().re < 0.0 {
-            // G_p odd, G_q even (so G_p' even, G_q' odd)
-            let t = self.transforms(z.neg(), deriv);
-            return Transforms {
-                p: -t.p,
-                q: t.q,
-                dp: t.dp,
-                dq: -t.dq,
-            };
-        }
-        let mut t = if z.z().norm_sqr() >= FAR_RADIUS * FAR_RADIUS {
-            self.far_field(z.z(), deriv)
+    /// G_p(z), G_q(z) and, when `deriv`, G_p'(z), G_q'(z), at each of the points z, off the
+    /// segment [-1, 1] or on it (the limit from below when Im z = -0.0). Points near the
+    /// contact share one pass over each far panel's rule.
+    pub(crate) fn transforms<const N: usize>(
+        &self,
+        points: [Point; N],
+        deriv: bool,
+    ) -> [Transforms; N] {
+        // G_p odd, G_q even (so G_p' even, G_q' odd): each point is taken with Re z >= 0
+        let left = points.map(|p| p.z().re < 0.0);
+        let right: [Point; N] =
+            std::array::from_fn(|i| if left[i] { points[i].neg() } else { points[i] });
+        let far = right.map(|p| p.z().norm_sqr() >= FAR_RADIUS * FAR_RADIUS);
+        let mut t = if far.iter().any(|&f| f) {
+            std::array::from_fn(|i| {
+                if far[i] {
+                    self.far_field(right[i].z(), deriv)
+                } else {
+                    self.panel_sums([right[i]], deriv)[0]
+                }
+            })
         } else {
-            self.panel_sums(z, deriv)
+            self.panel_sums(right, deriv)
         };
         let s = 1.0 / PI;
-        t.p *= s;
-        t.q *= s;
-        t.dp *= s;
-        t.dq *= s;
+        for (t, left) in t.iter_mut().zip(left) {
+            let sign = if left { -s } else { s };
+            t.p *= sign;
+            t.q *= s;
+            t.dp *= s;
+            t.dq *= sign;
+        }
         t
     }
 
-    /// Sum over the panels and their mirrors (times pi), Re z >= 0.
-    fn panel_sums(&self, point: Point, deriv: bool) -> Transforms {
+    /// Sums over the panels and their mirrors (times pi) at points with Re z >= 0: one pass
+    /// over a panel's far rule for all of them when it is far from all of them, by the band of
+    /// the nearest.
+    fn panel_sums<const N: usize>(&self, points: [Point; N], deriv: bool) -> [Transforms; N] {
         let zero = C64::new(0.0, 0.0);
         // scratch for the near field, filled only when a panel is near
         let mut scratch = None;
-        let mut t = Transforms::zero();
-        let z = point.z();
+        let mut t = [Transforms::zero(); N];
+        let mut z = [zero; N];
+        for (z, p) in z.iter_mut().zip(&points) {
+            *z = p.z();
+        }
         for panel in &self.panels {
-            match KernelPanel::band(panel.rho(z)) {
-                Some(b) => panel.far_pair(z, b, deriv, &mut t),
-                None => {
-                    let scratch =
-                        scratch.get_or_insert([[zero; MAX_DEGREE + 1], [zero; MAX_DEGREE + 1]]);
-                    let own = panel.near_sums(point, deriv, scratch);
-                    let mirror = match KernelPanel::band(panel.rho(-z)) {
-                        Some(b) => panel.far_sums(-z, b, deriv),
-                        None => panel.near_sums(point.neg(), deriv, scratch),
-                    };
-                    // g_p(z) - g_p(-z), g_q(z) + g_q(-z); derivatives in z
-                    t.p += own.p - mirror.p;
-                    t.q += own.q + mirror.q;
-                    t.dp += own.dp + mirror.dp;
-                    t.dq += own.dq - mirror.dq;
+            let mut bands = [None; N];
+            for (b, z) in bands.iter_mut().zip(&z) {
+                *b = panel.band(*z);
+            }
+            // the lowest band (None, near, sorts first)
+            if let Some(Some(b)) = bands.iter().min() {
+                panel.far_pair(z, *b, deriv, &mut t);
+                continue;
+            }
+            for ((t, point), band) in t.iter_mut().zip(points).zip(bands) {
+                let one = std::slice::from_mut(t).try_into().expect("one point");
+                if let Some(b) = band {
+                    panel.far_pair([point.z()], b, deriv, one);
+                    continue;
                 }
+                let scratch =
+                    scratch.get_or_insert([[zero; MAX_DEGREE + 1], [zero; MAX_DEGREE + 1]]);
+                let own = panel.near_sums(point, deriv, scratch);
+                let mirror = match panel.band(-point.z()) {
+                    Some(b) => panel.far_sums(-point.z(), b, deriv),
+                    None => panel.near_sums(point.neg(), deriv, scratch),
+                };
+                // g_p(z) - g_p(-z), g_q(z) + g_q(-z); derivatives in z
+                t.p += own.p - mirror.p;
+                t.q += own.q + mirror.q;
+                t.dp += own.dp + mirror.dp;
+                t.dq += own.dq - mirror.dq;
             }
         }
         t

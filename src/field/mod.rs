@@ -137,11 +137,11 @@ impl Field {
         let zero = C64::new(0.0, 0.0);
         let (mp, mq, dp, dq) = if y == 0.0 {
             // the limit from inside: both points at x - i0, d_f = 0
-            let t = self.kernel.transforms(
-                Point {
+            let [t] = self.kernel.transforms(
+                [Point {
                     x,
                     w: C64::new(0.0, -0.0),
-                },
+                }],
                 false,
             );
             (t.p, t.q, zero, zero)
@@ -152,8 +152,9 @@ impl Field {
                 w: C64::new(-(beta.im * y), beta.re * y),
             };
             let mean = C64::new(r.mean, 0.0);
-            let t1 = self.kernel.transforms(point(mean + half), false);
-            let t2 = self.kernel.transforms(point(mean - half), false);
+            let [t1, t2] = self
+                .kernel
+                .transforms([point(mean + half), point(mean - half)], false);
             let inv = (half * 2.0).inv();
             (
                 (t1.p + t2.p) * 0.5,
@@ -166,7 +167,7 @@ impl Field {
                 x,
                 w: C64::new(0.0, r.mean * y),
             };
-            let t = self.kernel.transforms(point, true);
+            let [t] = self.kernel.transforms([point], true);
             let iy = C64::new(0.0, y);
             (t.p, t.q, iy * t.dp, iy * t.dq)
         };
