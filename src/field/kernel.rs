@@ -623,7 +623,9 @@ impl Kernel {
     /// Prepares an expansion's panels.
     pub(crate) fn new(e: &Expansion) -> Self {
         let mut rules = Rules::new();
-        let p0 = e.tractions(0.0).0;
+        // the tractions' scale; where p(0) is infinite (the full-slip limit's |x|^(2g-1)),
+        // the mean pressure 1/2
+        let p0 = Some(e.tractions(0.0).0).filter(|p| p.is_finite()).unwrap_or(0.5);
         let panels: Vec<KernelPanel> = e
             .panels
             .iter()
