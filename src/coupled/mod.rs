@@ -24,8 +24,8 @@
 //! method refines the root at order 4 (if a higher order loses it, the search is redone at
 //! that order). If that fails, the whole search is redone scanning at order 8. Where the
 //! near-bonded law ([`near_bonded`]) puts 1 - c below 1e-6, the root is instead sought inside
-//! the law's window of lc at order 11 (the low orders lose the defect's sign there). The
-//! solution is checked for |q| <= mu p on the stick zone before it is returned.
+//! the law's window of lc at order 8, then 11 (the low orders lose the defect's sign there). The
+//! solution is checked for p > 0 and for |q| <= mu p on the stick zone before it is returned.
 //!
 //! Regimes ([`solve_to`]): closed forms where their error bounds meet both tolerances, the
 //! panels elsewhere:
@@ -89,11 +89,13 @@ const SCAN_ORDERS: [usize; 2] = [4, 8];
 /// Thin slip zones: where the near-bonded law ([`near_bonded::ln_w_range`]) puts 1 - c below
 /// WINDOW_BELOW, the root is sought inside its range of lc widened by WINDOW_MARGIN on both
 /// sides (narrower than the spacing pi / eps of the roots near full stick, so it holds one),
-/// at WINDOW_ORDER: the low scan orders lose the defect's sign there (b* = 0.05, mu~ = 0.5:
-/// order 4 never crosses zero, order 8 crosses back near lc = 35, order 13 is near-linear).
+/// at WINDOW_ORDERS in turn: the low scan orders lose the defect's sign there (b* = 0.05,
+/// mu~ = 0.5: order 4 never crosses zero, order 8 crosses at the root but back near lc = 35,
+/// order 13 is near-linear; at b* = 0.1, mu~ = 2 order 8 has no sign change in the window,
+/// order 11 has). Order 8 first: it halves the cost where it suffices (b* = 0.2, mu~ = 100).
 const WINDOW_BELOW: f64 = 1e-6;
 const WINDOW_MARGIN: f64 = 1.0;
-const WINDOW_ORDER: usize = 11;
+const WINDOW_ORDERS: [usize; 2] = [8, 11];
 
 /// Two successive orders must also agree on the tractions to TRACTION_RATIO times the
 /// tolerance (relative, [`traction_gap`]): near full stick a tolerance on c alone is met at
@@ -331,8 +333,8 @@ impl<'a> Level<'a> {
     fn root_from(&mut self, start: Start) -> Result<f64> {
         match start {
             Start::Scan(lc0, order) => self.first_root(lc0, order.min(self.order)),
-            Start::Window(lo, hi) => {
-                let n = WINDOW_ORDER.min(self.order);
+            Start::Window(lo, hi, order) => {
+                let n = order.min(self.order);
                 let (f_lo, f_hi) = (self.defect_at_order(lo, n)?, self.defect_at_order(hi, n)?);
                 if f_lo < 0.0 && f_hi >= 0.0 {
                     self.refine_bracket((lo, f_lo), (hi, f_hi), n)
@@ -548,18 +550,32 @@ fn traction_gap(d: &Discrete, other: &Discrete) -> f64 {
         .fold(0.0, f64::max)
 }
 
-/// Checks |q| <= mu p (to 1e-6 relative) at the stick panels' Gauss points.
-fn admissible(d: &Discrete, mu: f64) -> bool {
+/// The first violated admissibility condition at the panels' Gauss points, if any: p > 0
+/// everywhere (on the slip zones p = q / mu is O(1 / mu) at large friction, so relative
+/// accuracy matters) and |q| <= mu p (to 1e-6 relative) on the stick zone.
+fn inadmissible(d: &Discrete, mu: f64) -> Option<String> {
     let nodes = gauss_legendre_nodes(7);
-    d.mesh.panels.iter().filter(|p| p.stick).all(|panel| {
-        nodes.iter().all(|&node| {
-            let x = if panel.central {
-                panel.h * (0.5 * (1.0 + node)).sqrt()
+    d.mesh.panels.iter().find_map(|panel| {
+        nodes.iter().find_map(|&node| {
+            let at = if panel.central {
+                let x = panel.h * (0.5 * (1.0 + node)).sqrt();
+                Pt { x, u: 1.0 - x }
             } else {
-                Pt::local(panel.m, panel.h, node).x
+                Pt::local(panel.m, panel.h, node)
             };
-            let (p, q) = d.eval(Pt { x, u: 1.0 - x });
-            q.abs() <= mu * p * (1.0 + 1e-6) + 1e-12
+            let (p, q) = d.eval(at);
+            if p <= 0.0 {
+                Some(format!("p = {p:.3e} <= 0 near x = {}", at.x))
+            } else if panel.stick && q.abs() > mu * p * (1.0 + 1e-6) + 1e-12 {
+                Some(format!(
+                    "|q| = {:.3e} > mu p = {:.3e} on the stick zone near x = {}",
+                    q.abs(),
+                    mu * p,
+                    at.x
+                ))
+            } else {
+                None
+            }
         })
     })
 }
@@ -656,11 +672,11 @@ fn panels(k: &Coupling, tol: f64) -> Result<CoupledSolution> {
     // the orders in turn
     let window = near_bonded::ln_w_range(r.bp, r.mu)
         .filter(|&(_, hi)| r.bp > 0.0 && hi < WINDOW_BELOW.ln())
-        .map(|(lo, hi)| Start::Window(-hi - WINDOW_MARGIN, -lo + WINDOW_MARGIN));
+        .map(|(lo, hi)| (-hi - WINDOW_MARGIN, -lo + WINDOW_MARGIN));
     let lc0 = goodman_guess(r.bq, r.mu);
     let scans = SCAN_ORDERS.map(|order| Start::Scan(lc0, order));
     let starts: Vec<Start> = match window {
-        Some(Start::Window(lo, hi)) if 0.5 * (lo + hi) > T_MAX - WINDOW_MARGIN - 1.0 => {
+        Some((lo, hi)) if 0.5 * (lo + hi) > T_MAX - WINDOW_MARGIN - 1.0 => {
             return Err(Error::NoConvergence(format!(
                 "the slip zones (1 - c ~ {:.0e} by the near-bonded law) are too thin for the \
                  panels (1 - c above about {:.0e}), and the bonded limit's bounds miss the \
@@ -669,7 +685,7 @@ fn panels(k: &Coupling, tol: f64) -> Result<CoupledSolution> {
                 edge_of(T_MAX - WINDOW_MARGIN - 1.0).1
             )));
         }
-        Some(w) => vec![w],
+        Some((lo, hi)) => WINDOW_ORDERS.map(|n| Start::Window(lo, hi, n)).to_vec(),
         None => scans.to_vec(),
     };
     let mut result = Err(Error::Internal("coupled: no root search tried".into()));
@@ -687,16 +703,15 @@ fn panels(k: &Coupling, tol: f64) -> Result<CoupledSolution> {
 enum Start {
     /// Scan from below, from lc0 (or lower) up, at the given order.
     Scan(f64, usize),
-    /// The sign change inside the window (lo, hi) of lc, at [`WINDOW_ORDER`].
-    Window(f64, f64),
+    /// The sign change inside the window (lo, hi) of lc, at the given order.
+    Window(f64, f64, usize),
 }
 
 impl Start {
     /// The order the first root is found at.
     fn order(self) -> usize {
         match self {
-            Start::Scan(_, order) => order,
-            Start::Window(..) => WINDOW_ORDER,
+            Start::Scan(_, order) | Start::Window(_, _, order) => order,
         }
     }
 }
@@ -717,9 +732,9 @@ fn panels_from(
         let diff = order_difference(&root, &next);
         let gap = traction_gap(&next.discrete, &root.discrete);
         if diff <= tol && gap <= (TRACTION_RATIO * tol).max(TRACTION_FLOOR) {
-            if !admissible(&next.discrete, consts.mu) {
+            if let Some(why) = inadmissible(&next.discrete, consts.mu) {
                 return Err(Error::NoConvergence(format!(
-                    "root c = {c} violates |q| <= mu p on the stick zone"
+                    "the root c = {c} found is inadmissible: {why}"
                 )));
             }
             let edge = if c < 0.5 {

@@ -625,7 +625,9 @@ impl Kernel {
         let mut rules = Rules::new();
         // the tractions' scale; where p(0) is infinite (the full-slip limit's |x|^(2g-1)),
         // the mean pressure 1/2
-        let p0 = Some(e.tractions(0.0).0).filter(|p| p.is_finite()).unwrap_or(0.5);
+        let p0 = Some(e.tractions(0.0).0)
+            .filter(|p| p.is_finite())
+            .unwrap_or(0.5);
         let panels: Vec<KernelPanel> = e
             .panels
             .iter()
