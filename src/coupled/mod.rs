@@ -118,6 +118,11 @@ const TRACTION_PER_C: f64 = 50.0;
 /// takes seconds.
 const MAX_UNKNOWNS: usize = 2000;
 
+/// Relative accuracy of small c that [`solve_to`] asks of the panels when the tractions are
+/// wanted: at c = 1e-7 (an auxetic material, mu = 0.1) c to 1e-10 left (E2) off by 2e-6
+/// relative on the stick zone once the wrong-c modes were left out of the tractions.
+const RELATIVE_C: f64 = 1e-7;
+
 /// Factor on the difference of two successive orders' c in the error estimate.
 const ORDER_SAFETY: f64 = 2.0;
 
@@ -607,6 +612,12 @@ pub fn solve_to(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSolu
         return Ok(s);
     }
     let mut tol = tol.min((traction_tol / TRACTION_PER_C).max(TIGHTEST));
+    if traction_tol.is_finite() {
+        // small stick zones: the tractions there need c to a relative accuracy (the wrong-c
+        // modes they leave out grow with the relative error of c), so at most RELATIVE_C
+        // times the full-slip law's c (which is above the exact c)
+        tol = tol.min(RELATIVE_C * FullSlip::new(k).numerical_error());
+    }
     loop {
         let s = panels(k, tol)?;
         let e = s.traction_error();
