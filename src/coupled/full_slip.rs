@@ -23,7 +23,7 @@
 
 use std::f64::consts::PI;
 
-use crate::field::{Expand, Expansion, Family, Panel, fit};
+use crate::field::{Expand, Expansion, fitted_panel};
 use crate::numerics::cauchy::Weight;
 use crate::problem::{Coupling, Profile, StickEdge};
 
@@ -118,24 +118,16 @@ impl Expand for FullSlip {
     fn expansion(&self) -> Expansion {
         let (g, mu) = (self.g, self.coupling.mu);
         let h = 0.25;
-        let panel = |a: f64, weight: Weight, w: &dyn Fn(f64) -> f64| {
-            let p = fit(|t| {
-                let x = a + h * (1.0 + t);
-                self.p(x) / w(x)
-            });
-            let q = p.iter().map(|v| mu * v).collect();
-            Panel {
-                a,
-                b: a + 2.0 * h,
-                families: vec![Family { weight, p, q }],
-            }
+        let panel = |a: f64, weight: Weight| {
+            fitted_panel(a, a + 2.0 * h, weight, |_, opt| {
+                let p = self.p(a + h * opt);
+                (p, mu * p)
+            })
         };
         Expansion {
             panels: vec![
-                panel(0.0, Weight::Left(2.0 * g - 1.0), &|x| {
-                    (x / h).powf(2.0 * g - 1.0)
-                }),
-                panel(0.5, Weight::Right(-g), &|x| ((1.0 - x) / h).powf(-g)),
+                panel(0.0, Weight::Left(2.0 * g - 1.0)),
+                panel(0.5, Weight::Right(-g)),
             ],
         }
     }

@@ -23,7 +23,7 @@
 
 use std::f64::consts::PI;
 
-use crate::field::{Expand, Expansion, Family, Panel, fit};
+use crate::field::{Expand, Expansion, fitted_panel};
 use crate::numerics::cauchy::Weight;
 use crate::problem::{Coupling, Profile, StickEdge};
 
@@ -126,43 +126,18 @@ impl Profile for NearBonded {
 /// layer is below the resolution of doubles wherever this regime is used.
 impl Expand for NearBonded {
     fn expansion(&self) -> Expansion {
-        // p / w and q / w on [a, b] from u = 1 - x = (1 - b) + h (1 - t)
-        let fit_on = |a: f64, b: f64, w: &dyn Fn(f64) -> f64| {
+        // the tractions at u = 1 - x = (1 - b) + h (1 - t) on the panel [a, b]
+        let panel = |a: f64, b: f64, weight: Weight| {
             let h = 0.5 * (b - a);
-            let at = |t: f64| {
-                let u = (1.0 - b) + h * (1.0 - t);
-                let (p, q) = self.at(u);
-                (p / w(u), q / w(u))
-            };
-            (fit(|t| at(t).0), fit(|t| at(t).1))
+            fitted_panel(a, b, weight, |omt, _| self.at((1.0 - b) + h * omt))
         };
         let mut panels = Vec::new();
         let (mut a, mut u) = (0.0, 0.5);
         while u > EDGE_PANEL {
-            let b = 1.0 - u;
-            let (p, q) = fit_on(a, b, &|_| 1.0);
-            panels.push(Panel {
-                a,
-                b,
-                families: vec![Family {
-                    weight: Weight::One,
-                    p,
-                    q,
-                }],
-            });
-            (a, u) = (b, 0.25 * u);
+            panels.push(panel(a, 1.0 - u, Weight::One));
+            (a, u) = (1.0 - u, 0.25 * u);
         }
-        let h = 0.5 * (1.0 - a);
-        let (p, q) = fit_on(a, 1.0, &|u| (u / h).powf(-0.5));
-        panels.push(Panel {
-            a,
-            b: 1.0,
-            families: vec![Family {
-                weight: Weight::Right(-0.5),
-                p,
-                q,
-            }],
-        });
+        panels.push(panel(a, 1.0, Weight::Right(-0.5)));
         Expansion { panels }
     }
 }

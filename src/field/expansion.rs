@@ -176,6 +176,32 @@ fn legendre_coefficients(f: impl Fn(f64) -> f64, n: usize) -> Vec<f64> {
     coef
 }
 
+/// A panel [a, b] of one family with end weight `weight`: p / w and q / w fitted from
+/// `tractions(1 - t, 1 + t)`, the tractions at local t given its distances to the panel's
+/// ends (so that a closed form can keep them to full relative accuracy next to an end).
+pub(crate) fn fitted_panel(
+    a: f64,
+    b: f64,
+    weight: Weight,
+    tractions: impl Fn(f64, f64) -> (f64, f64),
+) -> Panel {
+    let at = |t: f64| {
+        let (omt, opt) = (1.0 - t, 1.0 + t);
+        let (p, q) = tractions(omt, opt);
+        let w = weight.at(omt, opt);
+        (p / w, q / w)
+    };
+    Panel {
+        a,
+        b,
+        families: vec![Family {
+            weight,
+            p: fit(|t| at(t).0),
+            q: fit(|t| at(t).1),
+        }],
+    }
+}
+
 /// Samples a method's tractions into an expansion (see the module documentation): panels
 /// graded geometrically towards c from both sides (the panels at c as wide as
 /// min(c, 1 - c) / 2) and a last panel weighted (1 - t)^(-edge) for p and q; the stick panel

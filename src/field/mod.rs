@@ -41,7 +41,9 @@ mod expansion;
 mod kernel;
 mod slip;
 
-pub(crate) use expansion::{Expand, Expansion, Exponents, Family, Panel, fit, sample};
+pub(crate) use expansion::{
+    Expand, Expansion, Exponents, Family, Panel, fit, fitted_panel, sample,
+};
 
 use crate::material::Effective;
 use crate::numerics::cauchy::C64;
