@@ -149,11 +149,29 @@ mod tests {
     use crate::numerics::quadrature::gauss_legendre;
     use crate::problem::traction_distance;
 
+    /// int_0^d f(e) de for f ~ e^(-1/2) times a log-periodic factor, in s = -ln(e / d), where
+    /// f de is smooth and decays like exp(-s / 2): composite Gauss-Legendre up to s = 100.
+    fn end_piece(d: f64, f: impl Fn(f64) -> f64) -> f64 {
+        let (gl, glw) = gauss_legendre(20);
+        (0..10)
+            .map(|k| {
+                let (m, h) = (10.0 * k as f64 + 5.0, 5.0);
+                h * gl
+                    .iter()
+                    .zip(&glw)
+                    .map(|(t, v)| {
+                        let e = d * (-(m + h * t)).exp();
+                        v * e * f(e)
+                    })
+                    .sum::<f64>()
+            })
+            .sum()
+    }
+
     /// (1/pi) PV int_{-1}^{1} f(t) / (x - t) dt for f ~ (1 -+ t)^(-1/2) times a log-periodic
     /// factor at the ends, f given as f(t, 1 - |t|) (the distance to the end to full relative
     /// accuracy): singularity subtraction with Gauss-Legendre on [-1 + d, 1 - d] (graded
-    /// towards x), the end pieces in s = -ln((1 -+ t) / d), where f dt is smooth and decays
-    /// like exp(-s / 2) (composite Gauss-Legendre up to s = 100).
+    /// towards x), the end pieces by [`end_piece`].
     fn hilbert_log_ends(f: &dyn Fn(f64, f64) -> f64, x: f64) -> f64 {
         let (gl, glw) = gauss_legendre(20);
         let d = 0.5 * (1.0 - x.abs());
@@ -177,18 +195,10 @@ mod tests {
                 .sum::<f64>();
         }
         for side in [1.0, -1.0] {
-            for k in 0..10 {
-                let (m, h) = (10.0 * k as f64 + 5.0, 5.0);
-                sum += h * gl
-                    .iter()
-                    .zip(&glw)
-                    .map(|(t, v)| {
-                        let e = d * (-(m + h * t)).exp();
-                        let y = side * (1.0 - e);
-                        v * e * (f(y, e) - fx) / (x - y)
-                    })
-                    .sum::<f64>();
-            }
+            sum += end_piece(d, |e| {
+                let y = side * (1.0 - e);
+                (f(y, e) - fx) / (x - y)
+            });
         }
         (sum + fx * ((1.0 + x) / (1.0 - x)).ln()) / PI
     }
@@ -225,24 +235,14 @@ mod tests {
                     -bq * px
                 );
             }
-            // int p = 2 int_0^1 p: [0, 1/2] directly, [1/2, 1] in s = -ln(2 (1 - t))
+            // int p = 2 int_0^1 p: [0, 1/2] directly, [1/2, 1] by end_piece
             let (gl, glw) = gauss_legendre(20);
             let mut half = 0.25
                 * gl.iter()
                     .zip(&glw)
                     .map(|(t, v)| v * p(0.25 + 0.25 * t, 0.75 - 0.25 * t))
                     .sum::<f64>();
-            for k in 0..10 {
-                let (m, h) = (10.0 * k as f64 + 5.0, 5.0);
-                half += h * gl
-                    .iter()
-                    .zip(&glw)
-                    .map(|(t, v)| {
-                        let e = 0.5 * (-(m + h * t)).exp();
-                        v * e * p(1.0 - e, e)
-                    })
-                    .sum::<f64>();
-            }
+            half += end_piece(0.5, |e| p(1.0 - e, e));
             assert!(
                 (2.0 * half - 1.0).abs() < 1e-12,
                 "{k:?}: int p = {}",
