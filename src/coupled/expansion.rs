@@ -8,15 +8,22 @@
 use super::mesh::Pt;
 use super::{CoupledSolution, Discrete, Regime};
 use crate::field::{Expand, Expansion, Exponents, Family, Panel, fit, sample};
+use crate::numerics::cauchy::Weight;
 
-/// Adds `coef` (times `scale`) as the p or q series of the family with `weight`.
-fn add(
-    families: &mut Vec<Family>,
-    weight: crate::numerics::cauchy::Weight,
-    coef: &[f64],
-    scale: f64,
-    is_q: bool,
-) {
+/// Adds `coef` (times `scale`) to the p or q series of the family with `weight`; a log
+/// weight ((1 -+ t)^g - 1) / g as its parts, (1 -+ t)^g and 1, each times 1 / g (the field
+/// takes Jacobi weights; the cancellation costs eps / g, 1e-11 at g = 1e-5, in the stresses).
+fn add(families: &mut Vec<Family>, weight: Weight, coef: &[f64], scale: f64, is_q: bool) {
+    let power = match weight {
+        Weight::RightLog(g) => Some((Weight::Right(g), g)),
+        Weight::LeftLog(g) => Some((Weight::Left(g), g)),
+        _ => None,
+    };
+    if let Some((power, g)) = power {
+        add(families, power, coef, scale / g, is_q);
+        add(families, Weight::One, coef, -scale / g, is_q);
+        return;
+    }
     let i = match families.iter().position(|f| f.weight == weight) {
         Some(i) => i,
         None => {
@@ -28,11 +35,16 @@ fn add(
             families.len() - 1
         }
     };
-    let series: Vec<f64> = coef.iter().map(|c| scale * c).collect();
-    if is_q {
-        families[i].q = series;
+    let series = if is_q {
+        &mut families[i].q
     } else {
-        families[i].p = series;
+        &mut families[i].p
+    };
+    if series.len() < coef.len() {
+        series.resize(coef.len(), 0.0);
+    }
+    for (s, c) in series.iter_mut().zip(coef) {
+        *s += scale * c;
     }
 }
 
@@ -54,7 +66,7 @@ fn from_discrete(d: &Discrete, delta: f64) -> Expansion {
                     a,
                     b,
                     families: vec![Family {
-                        weight: crate::numerics::cauchy::Weight::One,
+                        weight: Weight::One,
                         p: fit(|t| at(t).0),
                         q: fit(|t| delta * at(t).1),
                     }],

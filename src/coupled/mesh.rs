@@ -2,10 +2,12 @@
 //! the singular points x = c and x = 1, and the basis carried by each panel: weighted
 //! Legendre polynomials ([`Basis`]) whose weights hold the local exponents (THEORY.md section 5):
 //! - central panel [-l, l]: p and q / x polynomials in x^2;
-//! - stick panels: p, q polynomials; the one ending at c adds q (c - x)^g P_k and the
-//!   wrong-c mode (c - x)^(g-1);
-//! - slip panels: p polynomial; the one starting at c adds (x - c)^g P_k and the wrong-c mode
-//!   (x - c)^(g-1); the one ending at 1 is (1 - x)^(-g) P_k. On slip panels q = mu p.
+//! - stick panels: p, q polynomials; the one ending at c adds q (c - x)^g P_k (at large
+//!   friction ((c - x)^g - 1) / g P_k in the local variable, [`LOG_BELOW`]) and the wrong-c
+//!   mode (c - x)^(g-1);
+//! - slip panels: p polynomial; the one starting at c adds (x - c)^g P_k (or its log form)
+//!   and the wrong-c mode (x - c)^(g-1); the one ending at 1 is (1 - x)^(-g) P_k. On slip
+//!   panels q = mu p.
 //!
 //! Grading ([`Layout`]): each panel lies at least its own width away from every singular
 //! point that its basis does not carry, so the error decays geometrically in the order n.
@@ -60,11 +62,13 @@ impl Pt {
 pub(crate) enum Basis {
     /// Polynomials (w = 1).
     Plain,
-    /// q on the stick panel ending at c: (c - x)^g.
+    /// q on the stick panel ending at c: (c - x)^g, or below [`LOG_BELOW`] the log weight
+    /// ((c - x)^g - 1) / g in the local variable (see there).
     StickEdge,
     /// q's wrong-c mode on that panel, (c - x)^(g-1): its coefficient is the root function.
     StickWrongC,
-    /// p on the slip panel starting at c: (x - c)^g.
+    /// p on the slip panel starting at c: (x - c)^g, or below [`LOG_BELOW`]
+    /// ((x - c)^g - 1) / g in the local variable.
     SlipEdge,
     /// p's wrong-c mode on that panel: (x - c)^(g-1).
     SlipWrongC,
@@ -98,8 +102,10 @@ impl Basis {
     pub(crate) fn weight(self, g: f64) -> Weight {
         match self {
             Basis::Plain => Weight::One,
+            Basis::StickEdge if g < LOG_BELOW => Weight::RightLog(g),
             Basis::StickEdge => Weight::Right(g),
             Basis::StickWrongC => Weight::Right(g - 1.0),
+            Basis::SlipEdge if g < LOG_BELOW => Weight::LeftLog(g),
             Basis::SlipEdge => Weight::Left(g),
             Basis::SlipWrongC => Weight::Left(g - 1.0),
             Basis::PunchEdge => Weight::Right(-g),
@@ -108,6 +114,16 @@ impl Basis {
         }
     }
 }
+
+/// Below this edge exponent g (large friction, g ~ 1 / (pi b* mu~)) the edge blocks take
+/// the log weights ((1 -+ t)^g - 1) / g: with the panel's polynomials the same span as
+/// (1 -+ t)^g and 1, but not nearly dependent on them as g -> 0, where the solution's
+/// coefficients in (1 -+ t)^g and 1 grow like 1 / g and cancel (its limit has ln|x - c|):
+/// the least squares lost accuracy like eps / g^2 there (defect noise 1e-9 at g = 4e-5; 2e-11
+/// in the log basis). Above it the power weights: the field takes Jacobi weights, and a log
+/// weight split into its parts (coupled::expansion) costs it eps / g times the coefficients
+/// (slip offsets of 3e-9 next to c at g = 1.5e-3, 1e-11 with the power weights).
+pub(crate) const LOG_BELOW: f64 = 1e-3;
 
 /// `count` functions of one basis on a panel.
 #[derive(Clone, Copy, Debug, PartialEq)]

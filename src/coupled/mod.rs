@@ -86,6 +86,19 @@ const SCAN_MAX_STEP: f64 = 3.0;
 /// there, at 2-4 times the cost.
 const SCAN_ORDERS: [usize; 2] = [4, 8];
 
+/// Large friction: below this edge exponent g (g ~ 1 / (pi b* mu~)) the first root is sought
+/// at [`SMALL_G_ORDERS`] instead of the scan's or the window's orders: the low orders' defect
+/// is wrong there, even in sign (b* = 0.45, mu~ = 1e4, g = 7e-5: orders 4 and 6 wrong, 8
+/// right; b* = 0.99, mu~ = 1e4, g = 3e-5: order 8 wrong, 11 right; b* = 0.45, mu~ = 1e6:
+/// 11 right).
+const SMALL_G: f64 = 1e-3;
+const SMALL_G_ORDERS: [usize; 2] = [11, 13];
+
+/// The orders the first root is sought at: `orders`, or [`SMALL_G_ORDERS`] at large friction.
+fn search_orders(g: f64, orders: [usize; 2]) -> [usize; 2] {
+    if g < SMALL_G { SMALL_G_ORDERS } else { orders }
+}
+
 /// Thin slip zones: where the near-bonded law ([`near_bonded::ln_w_range`]) puts 1 - c below
 /// WINDOW_BELOW, the root is sought inside its range of lc widened by WINDOW_MARGIN on both
 /// sides (narrower than the spacing pi / eps of the roots near full stick, so it holds one),
@@ -685,7 +698,7 @@ fn panels(k: &Coupling, tol: f64) -> Result<CoupledSolution> {
         .filter(|&(_, hi)| r.bp > 0.0 && hi < WINDOW_BELOW.ln())
         .map(|(lo, hi)| (-hi - WINDOW_MARGIN, -lo + WINDOW_MARGIN));
     let lc0 = goodman_guess(r.bq, r.mu);
-    let scans = SCAN_ORDERS.map(|order| Start::Scan(lc0, order));
+    let scans = search_orders(consts.g, SCAN_ORDERS).map(|order| Start::Scan(lc0, order));
     let starts: Vec<Start> = match window {
         Some((lo, hi)) if 0.5 * (lo + hi) > T_MAX - WINDOW_MARGIN - 1.0 => {
             return Err(Error::NoConvergence(format!(
@@ -696,7 +709,9 @@ fn panels(k: &Coupling, tol: f64) -> Result<CoupledSolution> {
                 edge_of(T_MAX - WINDOW_MARGIN - 1.0).1
             )));
         }
-        Some((lo, hi)) => WINDOW_ORDERS.map(|n| Start::Window(lo, hi, n)).to_vec(),
+        Some((lo, hi)) => search_orders(consts.g, WINDOW_ORDERS)
+            .map(|n| Start::Window(lo, hi, n))
+            .to_vec(),
         None => scans.to_vec(),
     };
     let mut result = Err(Error::Internal("coupled: no root search tried".into()));
@@ -763,7 +778,7 @@ fn panels_from(
                 edge,
                 error: diff,
                 traction_error: ORDER_SAFETY * (dp + delta * dq)
-                    + next.discrete.wrong_c_norm(delta),
+                    + next.discrete.wrong_c_norm(delta, diff),
                 delta,
                 regime: Regime::Panels(next.discrete),
                 order: n,

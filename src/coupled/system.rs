@@ -13,6 +13,7 @@ use crate::error::{Error, Result};
 use crate::numerics::cauchy::WeightedFamily;
 use crate::numerics::orthopoly::{legendre, legendre_sum};
 use crate::numerics::quadrature::gauss_legendre_nodes;
+use crate::numerics::special::exprel;
 use faer::Mat;
 use faer::linalg::solvers::SolveLstsq;
 use std::f64::consts::PI;
@@ -344,18 +345,32 @@ impl Discrete {
         s
     }
 
-    /// The norm ([`crate::problem::traction_distance`], over -1 < x < 1) of the wrong-c modes
-    /// that [`Discrete::eval`] leaves out, with q = delta q~: on a panel of half-width h the
-    /// mode c0 (1 -+ t)^(g-1) has int |.| dx = |c0| h 2^g / g; on the slip panel it is p's
-    /// and mu times it q's.
-    pub(crate) fn wrong_c_norm(&self, delta: f64) -> f64 {
+    /// What leaving out the wrong-c modes costs in the norm
+    /// ([`crate::problem::traction_distance`], over -1 < x < 1, q = delta q~), for a stick
+    /// edge known to within dc: the mode c0 (1 -+ t)^(g-1) of a panel of half-width h counted
+    /// farther than dc from c, int |.| dx = |c0| h (2^g - r^g) / g, r = dc / h, written as
+    /// |c0| h r^g L exprel(g L), L = ln(2 / r), which stays finite as g -> 0 (large friction:
+    /// the whole-panel norm |c0| h 2^g / g grew like 1 / g, all of it from within
+    /// exp(-1 / g) of c, where c itself is not known; the tractions' change with c is
+    /// measured apart, by comparing two orders' tractions at the same x). On the slip panel
+    /// the mode is p's, and mu times it q's.
+    pub(crate) fn wrong_c_norm(&self, delta: f64, dc: f64) -> f64 {
         let g = self.k.g;
-        // sum of |c0| h over the modes among `blocks`, whose coefficients start at `col`
+        let dc = dc.max(f64::MIN_POSITIVE);
+        let far = |h: f64| {
+            let r = dc / h;
+            if r >= 2.0 {
+                return 0.0;
+            }
+            let l = (2.0 / r).ln();
+            h * r.powf(g) * l * exprel(g * l)
+        };
+        // sum of |c0| times its far norm over the modes among `blocks` (from column `col`)
         let modes = |blocks: &[Block], mut col: usize, h: f64| {
             let mut sum = 0.0;
             for b in blocks {
                 if b.basis.is_wrong_c() {
-                    sum += self.coef[col].abs() * h;
+                    sum += self.coef[col].abs() * far(h);
                 }
                 col += b.count;
             }
@@ -370,7 +385,7 @@ impl Discrete {
                     + delta * modes(&panel.q, panel.q_offset, panel.h)
             })
             .sum();
-        2.0 * sum * 2f64.powf(g) / g
+        2.0 * sum
     }
 
     /// (p, q) at 0 <= x < 1 given as a [`Pt`].

@@ -389,3 +389,27 @@ fn families_are_indexed_by_basis() {
         assert_eq!(fams.get(b).weight, b.weight(g));
     }
 }
+
+/// Large friction (g -> 0, where the edge blocks use the log weights): the answers at
+/// mu~ = 1e4, 1e5 and 1e6 (g = 7e-5 .. 7e-7) at b* = 0.45 meet their tolerance, satisfy (E1)
+/// and (E2) by the independent quadrature, and 1 - c tends to the finite limit an independent
+/// solver found (about 1.1e-3 at b* = 0.45, THEORY.md section 8; 1.15e-3 in issue 8).
+#[test]
+fn large_friction_tends_to_a_finite_slip_zone() {
+    let b = 0.45;
+    let mut widths = Vec::new();
+    // the least squares' rounding grows like eps / g: 1e-8 in the tractions at g = 7e-7,
+    // at the residual check's own threshold, which is therefore run at mu~ <= 1e5
+    for (mu, tol) in [(1e4, 1e-9), (1e5, 1e-9), (1e6, 1e-8)] {
+        let k = Coupling { bp: b, bq: b, mu };
+        let s = solve_to(&k, tol, 10.0 * tol).unwrap();
+        assert!(s.numerical_error() <= tol && s.traction_error() <= 10.0 * tol);
+        if mu <= 1e5 {
+            check_solution(&k, &s);
+        }
+        widths.push(s.edge().one_minus_c);
+        println!("b* 0.45 mu~ {mu:e}: 1 - c = {:.10e}", s.edge().one_minus_c);
+    }
+    assert!((widths[0] / 1.15e-3 - 1.0).abs() < 0.02, "{widths:?}");
+    assert!((widths[2] / widths[0] - 1.0).abs() < 1e-3, "{widths:?}");
+}

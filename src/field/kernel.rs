@@ -172,10 +172,14 @@ impl Antiderivative {
     /// The antiderivatives of the p and q series of `f` (degrees < n).
     fn new(f: &NearFamily, n: usize) -> Self {
         let left = matches!(f.weight, Weight::Left(_));
-        let e = match f.weight {
-            Weight::One => 0.0,
-            Weight::Right(e) | Weight::Left(e) => e,
-        };
+        // the field's families carry Jacobi weights only (coupled::expansion splits the
+        // solver's log weights into their power part and 1)
+        debug_assert!(!matches!(
+            f.weight,
+            Weight::RightLog(_) | Weight::LeftLog(_)
+        ));
+        let (alpha, beta) = f.weight.exponents();
+        let e = alpha + beta;
         // int from the anchor to t of w f, in the anchor's own orientation (u = 1 - t or 1 + t):
         // ((u / 2)^(e + 1)) int_{-1}^{1} (1 - s)^e f(...) ds by Gauss-Jacobi, exact for degree < n
         let (sj, wj) = gauss_jacobi(n / 2 + 2, e, 0.0);

@@ -103,14 +103,20 @@ impl Field {
     pub(crate) fn new(e: Expansion, k: &Effective, c: f64) -> Self {
         let kernel = Kernel::new(&e);
         let edge = e.edge_intensity().unwrap_or((0.0, 0.0));
-        let slip = slip::Slip::new(&kernel, k, c);
-        Field {
+        let mut field = Field {
             roots: Roots::new(k),
             kernel,
             expansion: e,
             edge,
-            slip,
-        }
+            slip: slip::Slip::default(),
+        };
+        field.slip = slip::Slip::new(&field.kernel, k, c, |t| field.slope_terms(t));
+        field
+    }
+
+    /// (p(t), sxx(t, 0)) on the surface: the slip's slope is nu p + sxx / delta^2.
+    fn slope_terms(&self, t: f64) -> (f64, f64) {
+        (self.expansion.tractions(t).0, self.stresses(t, 0.0)[0])
     }
 
     /// (k, g) of p ~ k (1 - |x|)^(-g) at the punch edges.
@@ -120,7 +126,7 @@ impl Field {
 
     /// The slip u(x) per P/E (see the module documentation).
     pub(crate) fn slip(&self, x: f64) -> f64 {
-        self.slip.at(x, &self.kernel)
+        self.slip.at(x, &self.kernel, |t| self.slope_terms(t))
     }
 
     /// (sxx, syy, sxy) per P/a at (x, y), y <= 0, both finite (y = 0: the limit from inside).

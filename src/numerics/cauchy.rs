@@ -22,7 +22,9 @@ use faer::complex::Complex;
 
 use super::orthopoly::{bonnet, jacobi_mass, legendre};
 use super::quadrature::gauss_jacobi;
-use super::special::{hyp2f1, lerch_phi1};
+use super::special::{
+    digamma, exprel, exprel2, hyp2f1, lerch_phi1, polylog, sin_pi, tan_pi, zeta_int,
+};
 
 /// Complex numbers (faer's re-export of num-complex).
 pub(crate) type C64 = Complex<f64>;
@@ -48,15 +50,30 @@ pub(crate) enum Weight {
     Right(f64),
     /// w = (1 + t)^e: the exponent sits at the left end.
     Left(f64),
+    /// w = ((1 - t)^g - 1) / g for g > 0 (-> ln(1 - t) as g -> 0): spans with `One` what
+    /// `Right(g)` spans with it, without their near-dependence at small g.
+    RightLog(f64),
+    /// w = ((1 + t)^g - 1) / g for g > 0.
+    LeftLog(f64),
 }
 
 impl Weight {
     /// Jacobi exponents (alpha at t = 1, beta at t = -1).
+    /// A log weight's are those of its power part (1 -+ t)^g.
     pub(crate) fn exponents(self) -> (f64, f64) {
         match self {
             Weight::One => (0.0, 0.0),
-            Weight::Right(e) => (e, 0.0),
-            Weight::Left(e) => (0.0, e),
+            Weight::Right(e) | Weight::RightLog(e) => (e, 0.0),
+            Weight::Left(e) | Weight::LeftLog(e) => (0.0, e),
+        }
+    }
+
+    /// A log weight as (its power part, g).
+    fn log_parts(self) -> Option<(Weight, f64)> {
+        match self {
+            Weight::RightLog(g) => Some((Weight::Right(g), g)),
+            Weight::LeftLog(g) => Some((Weight::Left(g), g)),
+            _ => None,
         }
     }
 
@@ -67,11 +84,33 @@ impl Weight {
             Weight::One => 1.0,
             Weight::Right(e) => one_minus_t.powf(e),
             Weight::Left(e) => one_plus_t.powf(e),
+            Weight::RightLog(g) => log_weight(g, one_minus_t),
+            Weight::LeftLog(g) => log_weight(g, one_plus_t),
         }
     }
 
-    /// The Gauss rule with m nodes for this weight (ascending nodes).
+    /// The Gauss rule with m nodes for this weight (ascending nodes), exact for degrees
+    /// below 2m. A log weight has none (it changes sign): its rule is the interpolatory
+    /// product rule on the 2m Gauss-Legendre nodes t_j (weights lambda_j), exact for the same
+    /// degrees: W_j = lambda_j sum_{k < 2m} (k + 1/2) P_k(t_j) M_k with the weight's moments
+    /// M_k ([`Weight::moments`], free of the eps / g a difference of two Gauss rules costs).
     pub(crate) fn rule(self, m: usize) -> (Vec<f64>, Vec<f64>) {
+        if self.log_parts().is_some() {
+            let n = 2 * m;
+            let (nodes, lambda) = gauss_jacobi(n, 0.0, 0.0);
+            let moments = self.moments(n);
+            let mut p = vec![0.0; n];
+            let weights = nodes
+                .iter()
+                .zip(&lambda)
+                .map(|(&t, &l)| {
+                    legendre(t, &mut p);
+                    let sum: f64 = (0..n).map(|k| (k as f64 + 0.5) * p[k] * moments[k]).sum();
+                    l * sum
+                })
+                .collect();
+            return (nodes, weights);
+        }
         let (alpha, beta) = self.exponents();
         gauss_jacobi(m, alpha, beta)
     }
@@ -79,13 +118,31 @@ impl Weight {
     /// M_k = int_{-1}^{1} w P_k for k < n: for (1 - t)^e, M_0 = 2^(e+1) / (e + 1) and
     /// M_k = M_{k-1} (k - 1 - e) / (k + 1 + e) (from int (1-t)^e P_k = 2^(e+1) Gamma(e+1)^2 /
     /// (Gamma(e+k+2) Gamma(e+1-k)), Gradshteyn-Ryzhik 7.127); (1 + t)^e by P_k(-t) = (-1)^k P_k(t).
+    /// A log weight's: (M_k of its power part - M_k of 1) / g, with M_0 - 2 = 2 (e^s - 1),
+    /// s = g ln 2 - ln(1 + g), and M_1 = M_0 g / (2 + g) divided by g exactly.
     pub(crate) fn moments(self, n: usize) -> Vec<f64> {
         let (e, sign) = match self {
             Weight::One => (0.0, 1.0),
-            Weight::Right(e) => (e, 1.0),
-            Weight::Left(e) => (e, -1.0),
+            Weight::Right(e) | Weight::RightLog(e) => (e, 1.0),
+            Weight::Left(e) | Weight::LeftLog(e) => (e, -1.0),
         };
         let mut m = Vec::with_capacity(n);
+        if self.log_parts().is_some() {
+            let g = e;
+            let s = g * std::f64::consts::LN_2 - g.ln_1p();
+            let m0 = jacobi_mass(g, 0.0);
+            m.push(2.0 * (std::f64::consts::LN_2 - g.ln_1p() / g) * exprel(s));
+            let mut v = -sign * m0 / (2.0 + g);
+            for k in 1..n {
+                if k > 1 {
+                    let kf = k as f64;
+                    v *= sign * (kf - 1.0 - g) / (kf + 1.0 + g);
+                }
+                m.push(v);
+            }
+            m.truncate(n);
+            return m;
+        }
         let mut v = jacobi_mass(e, 0.0);
         for k in 0..n {
             if k > 0 {
@@ -103,8 +160,81 @@ impl Weight {
             Weight::One => ((1.0 + y) / (1.0 - y)).abs().ln(),
             Weight::Right(e) => end_cauchy(e, 1.0 - y),
             Weight::Left(e) => -end_cauchy(e, 1.0 + y),
+            Weight::RightLog(g) => log_cauchy(g, 1.0 - y),
+            Weight::LeftLog(g) => -log_cauchy(g, 1.0 + y),
         }
     }
+}
+
+/// (u^g - 1) / g at u = 1 -+ t, to full accuracy for every g > 0: ln u exprel(g ln u)
+/// (-1 / g at u = 0).
+fn log_weight(g: f64, u: f64) -> f64 {
+    if u == 0.0 {
+        return -1.0 / g;
+    }
+    let l = u.ln();
+    l * exprel(g * l)
+}
+
+/// Below this g, [`log_cauchy`] takes its series form; above it the difference quotient of
+/// [`end_cauchy`] loses at most eps / g <= 2e-14.
+const LOG_SERIES_BELOW: f64 = 0.05;
+
+/// D(g, z) = PV int_0^2 ((u^g - 1) / g) / (u - z) du = (E(g, z) - E(0, z)) / g for
+/// -0.3 < z < 2.3 (z != 0, 2), E of [`end_cauchy`]. For small g the difference of
+/// [`end_cauchy_small`]'s parts, each divided by g without cancellation (a = ln 2,
+/// b = ln|z|, zeta = z / 2):
+///   D = a^2 exprel2(g a) - b^2 exprel2(g b) + |z|^g gap(g) / g
+///       - ln 2 exprel(g ln 2) S_g(zeta) - R_g(zeta),
+/// S_g = sum_{n >= 1} zeta^n / (n - g) = zeta / (1 - g) 2F1(1, 1 - g; 2 - g; zeta),
+/// R_g = (S_g - S_0) / g = sum_{n >= 1} zeta^n / (n (n - g)), summed directly for
+/// |zeta| <= 1/2 and as sum_j g^j Li_(j+2)(zeta) beyond; gap(g) / g = 2 sum_k zeta(2k)
+/// g^(2k-2) for z > 0 (cot) and that minus pi tan(pi g / 2) / g for z < 0 (csc).
+/// Checked against mpmath quadrature to 6e-15 for g = 1e-7 .. 0.05 (tests below).
+pub(crate) fn log_cauchy(g: f64, z: f64) -> f64 {
+    if g >= LOG_SERIES_BELOW {
+        return (end_cauchy(g, z) - end_cauchy(0.0, z)) / g;
+    }
+    let (a, b, zeta) = (std::f64::consts::LN_2, z.abs().ln(), 0.5 * z);
+    let cot_over = {
+        let (mut sum, mut power, mut k) = (0.0, 1.0, 1);
+        while let Some(zk) = zeta_int(2 * k) {
+            sum += 2.0 * zk * power;
+            power *= g * g;
+            if power < 1e-18 {
+                break;
+            }
+            k += 1;
+        }
+        sum
+    };
+    let gap_over = if z > 0.0 {
+        cot_over
+    } else {
+        cot_over - PI * (0.5 * PI * g).tan() / g
+    };
+    let w = 1.0 - zeta;
+    let s_g = zeta / (1.0 - g) * hyp2f1(1.0, 1.0 - g, 0.0, zeta, w, w.abs().ln());
+    let r_g = if zeta.abs() <= 0.5 {
+        let (mut sum, mut power, mut n) = (0.0f64, zeta, 1.0);
+        while power.abs() > 1e-18 * sum.abs().max(f64::MIN_POSITIVE) {
+            sum += power / (n * (n - g));
+            power *= zeta;
+            n += 1.0;
+        }
+        sum
+    } else {
+        let (mut sum, mut gj, mut j) = (0.0, 1.0, 2);
+        while gj > 1e-18 && j <= 16 {
+            sum += gj * polylog(j, zeta);
+            gj *= g;
+            j += 1;
+        }
+        sum
+    };
+    a * a * exprel2(g * a) - b * b * exprel2(g * b) + z.abs().powf(g) * gap_over
+        - a * exprel(g * a) * s_g
+        - r_g
 }
 
 /// T(a, zeta) = int_2^inf u^(-a) / (u - 2 zeta) du (principal value for zeta > 1) for a in
@@ -123,16 +253,50 @@ pub(crate) fn end_cauchy(e: f64, z: f64) -> f64 {
     if e == 0.0 {
         return ((2.0 - z) / z).abs().ln();
     }
+    if e.abs() < SMALL_EXPONENT {
+        return end_cauchy_small(e, z);
+    }
     if e > 0.0 {
         return e.exp2() / e + z * end_cauchy(e - 1.0, z);
     }
     let a = -e;
     let base = if z > 0.0 {
-        PI * z.powf(e) / (PI * a).tan()
+        PI * z.powf(e) / tan_pi(a)
     } else {
-        PI * (-z).powf(e) / (PI * a).sin()
+        PI * (-z).powf(e) / sin_pi(a)
     };
     base - end_tail(a, 0.5 * z)
+}
+
+/// Below this |e|, [`end_cauchy`] takes [`end_cauchy_small`]: the general formula's two parts
+/// each grow like 1 / e and cancel (an absolute error of eps / e, which the panel solver's
+/// nearly dependent blocks (x - c)^g P_k and P_k turn into eps / g^2: defect noise 1e-5 at
+/// g = 4e-5, i.e. b* = 0.83, mu~ = 1e4).
+const SMALL_EXPONENT: f64 = 0.1;
+
+/// E(e, z) for 0 < |e| < [`SMALL_EXPONENT`] without the cancelling 1 / e parts: with
+/// L = ln(2 / |z|) and zeta = z / 2 (from the formula of [`end_cauchy`], for e > 0 after its
+/// reduction to e - 1, and 2F1(1, a; 1 + a; zeta) = 1 + a zeta / (1 + a) 2F1(1, 1 + a; 2 + a;
+/// zeta) for e < 0, both signs give the same expression)
+///   E = |z|^e (L exprel(e L) + gap(e)) - 2^e zeta / (1 - e) 2F1(1, 1 - e; 2 - e; zeta),
+/// gap(e) = 1/e - pi cot(pi e) for z > 0 (principal value), 1/e - pi / sin(pi e) for z < 0
+/// ([`cot_gap`], [`csc_gap`]). At e = 0 it is ln|(2 - z) / z|.
+fn end_cauchy_small(e: f64, z: f64) -> f64 {
+    let (zeta, l) = (0.5 * z, (2.0 / z.abs()).ln());
+    let gap = if z > 0.0 { cot_gap(e) } else { csc_gap(e) };
+    let w = 1.0 - zeta;
+    let tail = e.exp2() * zeta / (1.0 - e) * hyp2f1(1.0, 1.0 - e, 0.0, zeta, w, w.abs().ln());
+    z.abs().powf(e) * (l * exprel(e * l) + gap) - tail
+}
+
+/// 1/x - pi cot(pi x) = psi(1 + x) - psi(1 - x) for |x| < 1 (no cancellation at small x).
+fn cot_gap(x: f64) -> f64 {
+    digamma(1.0 + x) - digamma(1.0 - x)
+}
+
+/// 1/x - pi / sin(pi x) = [`cot_gap`] - pi tan(pi x / 2) for |x| < 1.
+fn csc_gap(x: f64) -> f64 {
+    cot_gap(x) - PI * (0.5 * PI * x).tan()
 }
 
 /// Largest Bernstein parameter rho(zeta) = |zeta + sqrt(zeta^2 - 1)| at which
@@ -178,7 +342,7 @@ fn end_cauchy_complex(e: f64, s: C64, two_minus_s: C64) -> (C64, C64) {
         };
         C64::new(re, two_minus_s.arg() - (-s).arg())
     } else {
-        let whole = (-s).powf(e) * (PI / (-PI * e).sin());
+        let whole = (-s).powf(e) * (PI / sin_pi(-e));
         whole - lerch_phi1(s * 0.5, two_minus_s * 0.5, -e) * e.exp2()
     };
     let slope = -e.exp2() / two_minus_s + (value * e - e.exp2()) / s;
@@ -190,6 +354,11 @@ impl Weight {
     /// E(e, 1 - zeta) for (1 - t)^e and 1, -E(e, 1 + zeta) for (1 + t)^e; C_0' = -E'(e, s)
     /// in both cases (s the distance to the weighted end).
     fn cauchy0_complex(self, l: Local) -> (C64, C64) {
+        if let Some((power, g)) = self.log_parts() {
+            // the difference quotient (eps / g): the field gets log weights as their parts
+            let ((v, d), (v1, d1)) = (power.cauchy0_complex(l), Weight::One.cauchy0_complex(l));
+            return ((v - v1) / g, (d - d1) / g);
+        }
         let (value, slope) = match self {
             Weight::One => end_cauchy_complex(0.0, l.omz, l.opz),
             Weight::Right(e) => end_cauchy_complex(e, l.omz, l.opz),
@@ -197,6 +366,7 @@ impl Weight {
                 let (v, d) = end_cauchy_complex(e, l.opz, l.omz);
                 (-v, d)
             }
+            Weight::RightLog(_) | Weight::LeftLog(_) => unreachable!("log weights: above"),
         };
         (value, -slope)
     }
@@ -261,7 +431,7 @@ impl WeightedFamily {
             .map(|&y_min| {
                 let count = far_nodes(y_min, degrees);
                 let (nodes, weights) = weight.rule(count);
-                let mut wp = vec![0.0; count * degrees];
+                let mut wp = vec![0.0; nodes.len() * degrees];
                 for (j, (&t, &w)) in nodes.iter().zip(&weights).enumerate() {
                     let row = &mut wp[j * degrees..(j + 1) * degrees];
                     legendre(t, row);
@@ -368,7 +538,10 @@ mod tests {
         }
         breaks.sort_by(f64::total_cmp);
         breaks.dedup();
-        let (a, b) = w.exponents();
+        // log weights have no Gauss-Jacobi rule: Gauss-Legendre on the graded panels (the
+        // innermost, of width 2^-39, carries a log singularity of mass ~1e-10)
+        let log = matches!(w, Weight::RightLog(_) | Weight::LeftLog(_));
+        let (a, b) = if log { (0.0, 0.0) } else { w.exponents() };
         let mut sum = 0.0;
         for p in breaks.windows(2) {
             let (m, h) = (0.5 * (p[0] + p[1]), 0.5 * (p[1] - p[0]));
@@ -394,7 +567,7 @@ mod tests {
                     // distances to the ends without cancellation (dyadic break points)
                     let omt = (1.0 - p[1]) + h * (1.0 - xi);
                     let opt = (1.0 + p[0]) + h * (1.0 + xi);
-                    let ft = omt.powf(a) * opt.powf(b) * pk(t);
+                    let ft = w.at(omt, opt) * pk(t);
                     sum += h * wi * (ft - fy) / (y - t);
                 }
             }
@@ -411,6 +584,17 @@ mod tests {
             Weight::Right(0.2),
             Weight::Right(-0.8),
             Weight::Left(-0.5),
+            // small exponents (end_cauchy_small): the general formula was off by eps / e
+            Weight::Left(1e-6),
+            Weight::Right(-1e-6),
+            Weight::Right(3e-4),
+            Weight::Left(-0.0999),
+            Weight::Right(0.0999),
+            // log weights: the series form of log_cauchy, and the difference quotient
+            Weight::LeftLog(1e-7),
+            Weight::RightLog(1e-4),
+            Weight::LeftLog(0.03),
+            Weight::RightLog(0.3),
         ] {
             let fam = WeightedFamily::new(w, 12);
             let mut out = vec![0.0; 12];
@@ -434,7 +618,15 @@ mod tests {
     /// Far-field bands at the highest order used (degrees < 26), both signs of y.
     #[test]
     fn far_field_at_high_degree() {
-        for w in [Weight::Right(-0.45), Weight::Left(0.55), Weight::One] {
+        for w in [
+            Weight::Right(-0.45),
+            Weight::Left(0.55),
+            Weight::One,
+            // log weights: their product rules
+            Weight::LeftLog(1e-7),
+            Weight::RightLog(1e-3),
+            Weight::LeftLog(0.3),
+        ] {
             let fam = WeightedFamily::new(w, 26);
             let mut out = vec![0.0; 26];
             for y in [1.12, -1.45, 1.6, 4.5, -13.0, 45.0, 200.0] {
