@@ -16,6 +16,7 @@ module orthoslip_mod
   integer(c_int), parameter, public :: ORTHOSLIP_ERROR_TOLERANCE_NOT_MET = 5
   integer(c_int), parameter, public :: ORTHOSLIP_ERROR_INTERNAL = 6
   integer(c_int), parameter, public :: ORTHOSLIP_ERROR_PANIC = 7
+  integer(c_int), parameter, public :: ORTHOSLIP_ERROR_NO_ADMISSIBLE_SOLUTION = 8
   ! orthoslip_method
   integer(c_int), parameter, public :: ORTHOSLIP_METHOD_AUTO = 0
   integer(c_int), parameter, public :: ORTHOSLIP_METHOD_GOODMAN = 1

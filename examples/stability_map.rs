@@ -80,6 +80,7 @@ fn error_kind(e: &Error) -> &'static str {
         Error::InadmissibleMaterial(_) => "InadmissibleMaterial",
         Error::NoConvergence(_) => "NoConvergence",
         Error::ToleranceNotMet { .. } => "ToleranceNotMet",
+        Error::NoAdmissibleSolution(_) => "NoAdmissibleSolution",
         Error::Internal(_) => "Internal",
     }
 }

@@ -71,6 +71,14 @@ typedef enum {
    * caller.
    */
   ORTHOSLIP_ERROR_PANIC = 7,
+  /**
+   * The solver found the stick-edge root of the assumed form (a central stick zone
+   * |x| < c flanked by two slip zones), but that solution violates an admissibility
+   * condition (p < 0 somewhere in the contact, |q| > mu p on the stick zone, or slip
+   * against the friction): no solution of this form exists for this input. Appended after
+   * PANIC: the values above keep their numbers.
+   */
+  ORTHOSLIP_ERROR_NO_ADMISSIBLE_SOLUTION = 8,
 } orthoslip_status;
 
 /**
@@ -215,8 +223,10 @@ orthoslip_status orthoslip_contact_set_tolerance(orthoslip_contact *k, double to
  * On success `*out` owns a new solution, to be released with `orthoslip_solution_free`.
  * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER, ORTHOSLIP_ERROR_INVALID_ARGUMENT
  * (method not available), ORTHOSLIP_ERROR_NO_CONVERGENCE,
- * ORTHOSLIP_ERROR_TOLERANCE_NOT_MET or ORTHOSLIP_ERROR_INTERNAL; on failure `*out` is set to
- * NULL. Safe to call on the same contact from many threads at once.
+ * ORTHOSLIP_ERROR_TOLERANCE_NOT_MET, ORTHOSLIP_ERROR_NO_ADMISSIBLE_SOLUTION (the root found
+ * for c gives an inadmissible solution: no solution of the assumed form exists) or
+ * ORTHOSLIP_ERROR_INTERNAL; on failure `*out` is set to NULL. Safe to call on the same
+ * contact from many threads at once.
  *
  * # Safety
  * `k` must be NULL or a live contact; `out` NULL or valid for writing one pointer.

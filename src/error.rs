@@ -20,6 +20,10 @@ pub enum Error {
         /// What limited the accuracy.
         detail: String,
     },
+    /// The solver found the stick-edge root of the assumed form, but that solution violates
+    /// an admissibility condition (p < 0 somewhere in the contact, |q| > mu p on the stick
+    /// zone, or slip against the friction): no solution of this form exists for this input.
+    NoAdmissibleSolution(String),
     /// A bug: an internal invariant failed (reported as ORTHOSLIP_ERROR_INTERNAL; a panic
     /// caught at the C ABI is ORTHOSLIP_ERROR_PANIC instead).
     Internal(String),
@@ -39,6 +43,7 @@ impl fmt::Display for Error {
                 f,
                 "tolerance not met: error estimate {estimate:.3e} > tolerance {tolerance:.3e} ({detail})"
             ),
+            Error::NoAdmissibleSolution(m) => write!(f, "no admissible solution: {m}"),
             Error::Internal(m) => write!(f, "internal error: {m}"),
         }
     }

@@ -3,8 +3,8 @@
 //! (nu -> 1), kappa = 1 and kappa -> -nu, delta far from 1, near-incompressible plane strain,
 //! auxetic b* -> 1. Every method, called directly and through `Contact`, must return either a
 //! valid edge (0 <= c <= 1, c = 1 only as the rounding of a tiny 1 - c, 0 < 1 - c <= 1, finite
-//! estimate) with finite tractions, or a clear error (NoConvergence, ToleranceNotMet or
-//! InvalidArgument with a message) — never NaN, never a panic. An error estimate may be
+//! estimate) with finite tractions, or a clear error (NoConvergence, NoAdmissibleSolution,
+//! ToleranceNotMet or InvalidArgument with a message) — never NaN, never a panic. An error estimate may be
 //! +infinity ("no bound known", e.g. GOODMAN beyond the model-error table), never NaN. The error
 //! estimates (LCP, COUPLED: `numerical_error`; GOODMAN, SPENCE: plus `model_error::bound`) must
 //! bound the true error against a tighter COUPLED run wherever both exist on a small grid.
@@ -89,7 +89,9 @@ enum Violation {
 /// The error must be one of the expected kinds, with a message.
 fn check_error(e: &Error) -> Option<Violation> {
     let ok = match e {
-        Error::NoConvergence(m) | Error::InvalidArgument(m) => !m.trim().is_empty(),
+        Error::NoConvergence(m) | Error::NoAdmissibleSolution(m) | Error::InvalidArgument(m) => {
+            !m.trim().is_empty()
+        }
         Error::ToleranceNotMet {
             estimate,
             tolerance,

@@ -22,6 +22,7 @@ from ._ffi import (
     InadmissibleMaterialError,
     InternalError,
     InvalidArgumentError,
+    NoAdmissibleSolutionError,
     NoConvergenceError,
     NullPointerError,
     OrthoslipError,
@@ -46,6 +47,7 @@ __all__ = [
     "InadmissibleMaterialError",
     "NoConvergenceError",
     "ToleranceNotMetError",
+    "NoAdmissibleSolutionError",
     "InternalError",
     "PanicError",
 ]

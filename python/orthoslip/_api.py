@@ -206,6 +206,8 @@ class Contact:
         Raises:
             NoConvergenceError: the method did not converge (e.g. a stick zone below 1e-35).
             ToleranceNotMetError: an error estimate exceeds ``tol`` or ``traction_tol``.
+            NoAdmissibleSolutionError: the root found for c gives an inadmissible solution
+                (p < 0, |q| > mu p on the stick zone, or slip against the friction).
         """
         return Solution(
             new_handle(

@@ -58,6 +58,12 @@ class ToleranceNotMetError(OrthoslipError):
     """The method ran, but its error estimate exceeds the requested tolerance."""
 
 
+class NoAdmissibleSolutionError(OrthoslipError):
+    """The solver found the stick-edge root of the assumed form, but that solution violates an
+    admissibility condition (p < 0, |q| > mu p on the stick zone, or slip against the
+    friction): no solution of this form exists for this input."""
+
+
 class InternalError(OrthoslipError):
     """A bug in the library: an internal invariant failed (or, as :class:`PanicError`, a
     panic was caught at the C boundary)."""
@@ -75,6 +81,7 @@ _EXCEPTIONS: dict[str, type[OrthoslipError]] = {
     "ORTHOSLIP_ERROR_TOLERANCE_NOT_MET": ToleranceNotMetError,
     "ORTHOSLIP_ERROR_INTERNAL": InternalError,
     "ORTHOSLIP_ERROR_PANIC": PanicError,
+    "ORTHOSLIP_ERROR_NO_ADMISSIBLE_SOLUTION": NoAdmissibleSolutionError,
 }
 
 

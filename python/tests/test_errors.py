@@ -81,6 +81,27 @@ def test_every_status_the_library_names_becomes_its_exception() -> None:
     _ffi.check(0)
 
 
+def test_statuses_keep_their_numbers_names_and_classes() -> None:
+    # The C ABI is append-only: listed by hand, not read from the library.
+    expected = [
+        ("ORTHOSLIP_ERROR_NULL_POINTER", orthoslip.NullPointerError),
+        ("ORTHOSLIP_ERROR_INVALID_ARGUMENT", orthoslip.InvalidArgumentError),
+        ("ORTHOSLIP_ERROR_INADMISSIBLE_MATERIAL", orthoslip.InadmissibleMaterialError),
+        ("ORTHOSLIP_ERROR_NO_CONVERGENCE", orthoslip.NoConvergenceError),
+        ("ORTHOSLIP_ERROR_TOLERANCE_NOT_MET", orthoslip.ToleranceNotMetError),
+        ("ORTHOSLIP_ERROR_INTERNAL", orthoslip.InternalError),
+        ("ORTHOSLIP_ERROR_PANIC", orthoslip.PanicError),
+        ("ORTHOSLIP_ERROR_NO_ADMISSIBLE_SOLUTION", orthoslip.NoAdmissibleSolutionError),
+    ]
+    for status, (name, cls) in enumerate(expected, start=1):
+        assert getattr(_ffi.lib, name) == status
+        assert _ffi.status_name(status) == name
+        with pytest.raises(cls) as raised:
+            _ffi.check(status)
+        assert type(raised.value) is cls and raised.value.status == status
+    assert _ffi.status_name(len(expected) + 1) == "ORTHOSLIP_STATUS_UNKNOWN"
+
+
 def test_a_status_unknown_to_the_library_is_still_an_error() -> None:
     with pytest.raises(orthoslip.OrthoslipError) as raised:
         Contact(Material.effective(1, 0.3, 1, 1), -2.0)

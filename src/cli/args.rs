@@ -6,8 +6,9 @@ use orthoslip::{Material, Method};
 const EXIT_STATUS: &str = "\
 Exit status:
   0  success
-  1  the solver failed: no convergence, tolerance not met or an internal error (for sweep:
-     at least one mu failed; its row has status != ok), or the output could not be written
+  1  the solver failed: no convergence, tolerance not met, no admissible solution or an
+     internal error (for sweep: at least one mu failed; its row has status != ok), or the
+     output could not be written
   2  bad input: an unknown, missing or unparsable option, or a value the library rejects
      (e.g. mu < 0, an inadmissible material)
 Errors are reported on stderr in one line starting with 'orthoslip: '.";

@@ -144,3 +144,47 @@ fn fail(status: u8, message: &str) -> ExitCode {
     eprintln!("orthoslip: {}", line.join(" "));
     ExitCode::from(status)
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Each kind of library error has its status word and exit class: bad input exits 2,
+    /// every solver failure (the inadmissible root included) exits 1.
+    #[test]
+    fn library_errors_get_their_status_word_and_exit_class() {
+        let text = || "x".to_owned();
+        let cases = [
+            (Error::InvalidArgument(text()), "invalid_argument", true),
+            (
+                Error::InadmissibleMaterial(text()),
+                "inadmissible_material",
+                true,
+            ),
+            (Error::NoConvergence(text()), "no_convergence", false),
+            (
+                Error::ToleranceNotMet {
+                    estimate: 2.0,
+                    tolerance: 1.0,
+                    detail: text(),
+                },
+                "tolerance_not_met",
+                false,
+            ),
+            (
+                Error::NoAdmissibleSolution(text()),
+                "no_admissible_solution",
+                false,
+            ),
+            (Error::Internal(text()), "internal_error", false),
+        ];
+        for (e, word, input) in cases {
+            assert_eq!(status_of(&e), word);
+            match Failure::from(e) {
+                Failure::Input(m) => assert!(input, "{m}"),
+                Failure::Solver(m) => assert!(!input, "{m}"),
+                Failure::Output(e) => panic!("{e}"),
+            }
+        }
+    }
+}

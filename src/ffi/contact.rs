@@ -117,8 +117,10 @@ pub unsafe extern "C" fn orthoslip_contact_set_tolerance(
 /// On success `*out` owns a new solution, to be released with `orthoslip_solution_free`.
 /// Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER, ORTHOSLIP_ERROR_INVALID_ARGUMENT
 /// (method not available), ORTHOSLIP_ERROR_NO_CONVERGENCE,
-/// ORTHOSLIP_ERROR_TOLERANCE_NOT_MET or ORTHOSLIP_ERROR_INTERNAL; on failure `*out` is set to
-/// NULL. Safe to call on the same contact from many threads at once.
+/// ORTHOSLIP_ERROR_TOLERANCE_NOT_MET, ORTHOSLIP_ERROR_NO_ADMISSIBLE_SOLUTION (the root found
+/// for c gives an inadmissible solution: no solution of the assumed form exists) or
+/// ORTHOSLIP_ERROR_INTERNAL; on failure `*out` is set to NULL. Safe to call on the same
+/// contact from many threads at once.
 ///
 /// # Safety
 /// `k` must be NULL or a live contact; `out` NULL or valid for writing one pointer.

@@ -52,6 +52,12 @@ pub enum orthoslip_status {
     /// A bug in orthoslip: a panic was caught at the boundary instead of unwinding into the
     /// caller.
     ORTHOSLIP_ERROR_PANIC = 7,
+    /// The solver found the stick-edge root of the assumed form (a central stick zone
+    /// |x| < c flanked by two slip zones), but that solution violates an admissibility
+    /// condition (p < 0 somewhere in the contact, |q| > mu p on the stick zone, or slip
+    /// against the friction): no solution of this form exists for this input. Appended after
+    /// PANIC: the values above keep their numbers.
+    ORTHOSLIP_ERROR_NO_ADMISSIBLE_SOLUTION = 8,
 }
 
 /// Solution method.
@@ -108,6 +114,7 @@ impl From<Error> for Failure {
             Error::InadmissibleMaterial(_) => ORTHOSLIP_ERROR_INADMISSIBLE_MATERIAL,
             Error::NoConvergence(_) => ORTHOSLIP_ERROR_NO_CONVERGENCE,
             Error::ToleranceNotMet { .. } => ORTHOSLIP_ERROR_TOLERANCE_NOT_MET,
+            Error::NoAdmissibleSolution(_) => ORTHOSLIP_ERROR_NO_ADMISSIBLE_SOLUTION,
             Error::Internal(_) => ORTHOSLIP_ERROR_INTERNAL,
         };
         Failure {
@@ -286,6 +293,7 @@ pub extern "C" fn orthoslip_status_string(status: StatusArg) -> *const c_char {
         5 => c"ORTHOSLIP_ERROR_TOLERANCE_NOT_MET",
         6 => c"ORTHOSLIP_ERROR_INTERNAL",
         7 => c"ORTHOSLIP_ERROR_PANIC",
+        8 => c"ORTHOSLIP_ERROR_NO_ADMISSIBLE_SOLUTION",
         _ => c"ORTHOSLIP_STATUS_UNKNOWN",
     };
     s.as_ptr()
@@ -328,6 +336,76 @@ mod tests {
         assert!(last_error().starts_with("orthoslip_test_internal"));
         let name = unsafe { std::ffi::CStr::from_ptr(orthoslip_status_string(StatusArg(7))) };
         assert_eq!(name.to_str(), Ok("ORTHOSLIP_ERROR_PANIC"));
+    }
+
+    /// The ABI is append-only: every status keeps its number and its name, listed here by
+    /// hand (not derived from the enum), and values past the last one are unknown.
+    #[test]
+    fn statuses_keep_their_numbers_and_names() {
+        use orthoslip_status::*;
+        let table = [
+            (ORTHOSLIP_OK, 0, "ORTHOSLIP_OK"),
+            (
+                ORTHOSLIP_ERROR_NULL_POINTER,
+                1,
+                "ORTHOSLIP_ERROR_NULL_POINTER",
+            ),
+            (
+                ORTHOSLIP_ERROR_INVALID_ARGUMENT,
+                2,
+                "ORTHOSLIP_ERROR_INVALID_ARGUMENT",
+            ),
+            (
+                ORTHOSLIP_ERROR_INADMISSIBLE_MATERIAL,
+                3,
+                "ORTHOSLIP_ERROR_INADMISSIBLE_MATERIAL",
+            ),
+            (
+                ORTHOSLIP_ERROR_NO_CONVERGENCE,
+                4,
+                "ORTHOSLIP_ERROR_NO_CONVERGENCE",
+            ),
+            (
+                ORTHOSLIP_ERROR_TOLERANCE_NOT_MET,
+                5,
+                "ORTHOSLIP_ERROR_TOLERANCE_NOT_MET",
+            ),
+            (ORTHOSLIP_ERROR_INTERNAL, 6, "ORTHOSLIP_ERROR_INTERNAL"),
+            (ORTHOSLIP_ERROR_PANIC, 7, "ORTHOSLIP_ERROR_PANIC"),
+            (
+                ORTHOSLIP_ERROR_NO_ADMISSIBLE_SOLUTION,
+                8,
+                "ORTHOSLIP_ERROR_NO_ADMISSIBLE_SOLUTION",
+            ),
+        ];
+        let name = |value: c_int| {
+            let s = unsafe { std::ffi::CStr::from_ptr(orthoslip_status_string(StatusArg(value))) };
+            s.to_str().unwrap().to_owned()
+        };
+        for (status, value, expected) in table {
+            assert_eq!(status as c_int, value, "{expected}");
+            assert_eq!(name(value), expected);
+        }
+        for value in [-1, 9, 99] {
+            assert_eq!(name(value), "ORTHOSLIP_STATUS_UNKNOWN");
+        }
+    }
+
+    /// A solution of the assumed form that is inadmissible has its own status and message.
+    #[test]
+    fn no_admissible_solution_maps_to_its_status() {
+        let status = run("orthoslip_test_inadmissible", || {
+            Err(Error::NoAdmissibleSolution("p < 0 near x = 0.99".into()).into())
+        });
+        assert_eq!(
+            status,
+            orthoslip_status::ORTHOSLIP_ERROR_NO_ADMISSIBLE_SOLUTION
+        );
+        assert_eq!(status as c_int, 8);
+        assert_eq!(
+            last_error(),
+            "orthoslip_test_inadmissible: no admissible solution: p < 0 near x = 0.99"
+        );
     }
 
     /// A message cannot be stored while the slot is borrowed: the call still returns its

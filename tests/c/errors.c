@@ -351,26 +351,33 @@ static void check_message_buffer(void)
 
 static void check_strings(void)
 {
-    static const char *const names[] = {
-        "ORTHOSLIP_OK",
-        "ORTHOSLIP_ERROR_NULL_POINTER",
-        "ORTHOSLIP_ERROR_INVALID_ARGUMENT",
-        "ORTHOSLIP_ERROR_INADMISSIBLE_MATERIAL",
-        "ORTHOSLIP_ERROR_NO_CONVERGENCE",
-        "ORTHOSLIP_ERROR_TOLERANCE_NOT_MET",
-        "ORTHOSLIP_ERROR_INTERNAL",
-        "ORTHOSLIP_ERROR_PANIC",
+    /* The ABI is append-only: each status keeps its number (its index here) and its name. */
+    static const struct {
+        orthoslip_status status;
+        const char *name;
+    } statuses[] = {
+        {ORTHOSLIP_OK, "ORTHOSLIP_OK"},
+        {ORTHOSLIP_ERROR_NULL_POINTER, "ORTHOSLIP_ERROR_NULL_POINTER"},
+        {ORTHOSLIP_ERROR_INVALID_ARGUMENT, "ORTHOSLIP_ERROR_INVALID_ARGUMENT"},
+        {ORTHOSLIP_ERROR_INADMISSIBLE_MATERIAL, "ORTHOSLIP_ERROR_INADMISSIBLE_MATERIAL"},
+        {ORTHOSLIP_ERROR_NO_CONVERGENCE, "ORTHOSLIP_ERROR_NO_CONVERGENCE"},
+        {ORTHOSLIP_ERROR_TOLERANCE_NOT_MET, "ORTHOSLIP_ERROR_TOLERANCE_NOT_MET"},
+        {ORTHOSLIP_ERROR_INTERNAL, "ORTHOSLIP_ERROR_INTERNAL"},
+        {ORTHOSLIP_ERROR_PANIC, "ORTHOSLIP_ERROR_PANIC"},
+        {ORTHOSLIP_ERROR_NO_ADMISSIBLE_SOLUTION, "ORTHOSLIP_ERROR_NO_ADMISSIBLE_SOLUTION"},
     };
     const char *v = orthoslip_version();
     unsigned major, minor, patch;
     char end;
     int i;
-    for (i = 0; i < (int)(sizeof names / sizeof names[0]); i++) {
+    for (i = 0; i < (int)(sizeof statuses / sizeof statuses[0]); i++) {
         const char *s = orthoslip_status_string((orthoslip_status)i);
-        CHECK(s != NULL && strcmp(s, names[i]) == 0);
+        CHECK((int)statuses[i].status == i);
+        CHECK(s != NULL && strcmp(s, statuses[i].name) == 0);
     }
 #ifndef __cplusplus
     CHECK(strcmp(orthoslip_status_string((orthoslip_status)99), "ORTHOSLIP_STATUS_UNKNOWN") == 0);
+    CHECK(strcmp(orthoslip_status_string((orthoslip_status)9), "ORTHOSLIP_STATUS_UNKNOWN") == 0);
 #endif
     CHECK(v != NULL);
     CHECK(sscanf(v, "%u.%u.%u%c", &major, &minor, &patch, &end) == 3);
