@@ -1,5 +1,6 @@
 //! Stability map: where each method fails. c depends only on (b*, mu~) (THEORY.md section 4),
-//! so the methods are swept over that plane (b* in [0.02, 0.95], mu~ in [1e-3, 1e3]) and over
+//! so the methods are swept over that plane (b* in [0.005, 0.99], mu~ in [1e-6, 1e6], and
+//! mu = 0) and over
 //! the engineering-constant extremes that lead to its edges (section 5: mu -> 0 and -> infinity,
 //! kappa -> -nu, kappa = 1, delta far from 1, nu -> 1 i.e. A -> 0, near-incompressible plane
 //! strain, auxetic nu -> -1 i.e. b* -> 1). For every scene and method (GOODMAN, SPENCE, LCP on
@@ -180,10 +181,15 @@ impl Scene {
     }
 }
 
-/// Grid of the (b*, mu~) plane: b* linear, mu~ log.
+/// Grid of the (b*, mu~) plane: b* from 0.005 to 0.99 (denser near the ends and around
+/// b* = 0.1, where the slip zones at large friction are thinnest that the panels must
+/// resolve), mu~ log from 1e-6 to 1e6 in thirds of a decade (mu = 0 is mapped apart).
 fn plane_axes() -> (Vec<f64>, Vec<f64>) {
-    let b: Vec<f64> = (0..12).map(|i| 0.02 + 0.93 * i as f64 / 11.0).collect();
-    let mu: Vec<f64> = (0..19).map(|i| 10f64.powf(-3.0 + i as f64 / 3.0)).collect();
+    let b = vec![
+        0.005, 0.02, 0.05, 0.08, 0.1, 0.12, 0.15, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 0.95,
+        0.99,
+    ];
+    let mu: Vec<f64> = (0..37).map(|i| 10f64.powf(-6.0 + i as f64 / 3.0)).collect();
     (b, mu)
 }
 
@@ -394,7 +400,21 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         }
         eprintln!("b* = {b:.3}: {:.1} s", t0.elapsed().as_secs_f64());
     }
-    let engineering: Vec<Solved> = engineering_scenes()?.into_iter().map(Solved::new).collect();
+    let mut engineering: Vec<Solved> = b_axis
+        .iter()
+        .map(|&b| {
+            Solved::new(Scene {
+                family: "plane-mu0",
+                label: format!("b*={b:.4} mu=0"),
+                k: Coupling {
+                    bp: b,
+                    bq: b,
+                    mu: 0.0,
+                },
+            })
+        })
+        .collect();
+    engineering.extend(engineering_scenes()?.into_iter().map(Solved::new));
     eprintln!("engineering scenes: {:.1} s", t0.elapsed().as_secs_f64());
 
     let mut csv = String::from(CSV_HEADER);

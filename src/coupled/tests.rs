@@ -413,3 +413,22 @@ fn large_friction_tends_to_a_finite_slip_zone() {
     assert!((widths[0] / 1.15e-3 - 1.0).abs() < 0.02, "{widths:?}");
     assert!((widths[2] / widths[0] - 1.0).abs() < 1e-3, "{widths:?}");
 }
+
+/// An auxetic extreme (b* = 0.99995, nu -> -1) whose scan starts beyond the first root: from
+/// c = 1/2 (below Goodman's c, near 1) the defect is negative on a later lobe and the first
+/// sign change met, c = 0.888, has p < 0; the rescan from far below finds the first root,
+/// c ~ 1.35e-4, which satisfies (E1) and (E2) by the independent quadrature and is admissible.
+#[test]
+fn auxetic_extreme_finds_the_first_root() {
+    let b = 0.99995;
+    let k = Coupling {
+        bp: b,
+        bq: b,
+        mu: 10.0,
+    };
+    let s = solve_to(&k, 1e-8, 1e-8).unwrap();
+    let c = s.edge().c;
+    println!("b* {b} mu~ 10: c = {c:.12e}");
+    assert!(c > 1e-4 && c < 2e-4, "c = {c}");
+    check_solution(&k, &s);
+}
