@@ -415,7 +415,7 @@ orthoslip_status orthoslip_solution_method(const orthoslip_solution *s, orthosli
  * approximations GOODMAN and SPENCE an empirical model-error bound (twice the largest error
  * measured by COUPLED at the surrounding points of a table computed offline, plus 1e-10;
  * validated at random points off the table, not certified), +INFINITY where the table gives
- * no bound (outside its range of b* = 0.05 .. 0.95, or where the exact solver failed
+ * no bound (outside its range of b* = 0.005 .. 0.99, or where the exact solver failed
  * nearby). Never NaN.
  *
  * Returns ORTHOSLIP_OK or ORTHOSLIP_ERROR_NULL_POINTER (nothing written).

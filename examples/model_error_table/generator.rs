@@ -4,6 +4,8 @@
 //! `tests/model_error_table.rs`.
 
 use std::fmt::Write as _;
+use std::panic;
+use std::sync::atomic::{AtomicUsize, Ordering};
 
 use orthoslip::model_error::FLOOR;
 use orthoslip::problem::traction_parts;
@@ -55,18 +57,49 @@ pub fn sample(b_star: f64, mu_tilde: f64) -> Result<Sample> {
     })
 }
 
+/// [`sample`] at every (b*, log10 mu~) of `points`, spread over the machine's cores; None
+/// where the reference fails (an error, or a panic: one bad point must not cost a run of
+/// minutes).
+pub fn samples(points: &[(f64, f64)]) -> Vec<Option<Sample>> {
+    let next = AtomicUsize::new(0);
+    let workers = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let done: Vec<Vec<(usize, Option<Sample>)>> = std::thread::scope(|scope| {
+        let handles: Vec<_> = (0..workers)
+            .map(|_| {
+                scope.spawn(|| {
+                    let mut mine = Vec::new();
+                    loop {
+                        let i = next.fetch_add(1, Ordering::Relaxed);
+                        let Some(&(b, l)) = points.get(i) else {
+                            return mine;
+                        };
+                        let s = panic::catch_unwind(|| sample(b, 10f64.powf(l)).ok());
+                        mine.push((i, s.ok().flatten()));
+                    }
+                })
+            })
+            .collect();
+        handles
+            .into_iter()
+            .map(|h| h.join().expect("a worker of the table generator panicked"))
+            .collect()
+    });
+    let mut out = vec![None; points.len()];
+    for (i, s) in done.into_iter().flatten() {
+        out[i] = s;
+    }
+    out
+}
+
 /// The source text of `table.rs` for the given grids. Each value is rounded up to two
 /// significant digits; inf where the reference failed.
 pub fn table_source(b_star: &[f64], log10_mu: &[f64]) -> String {
-    let samples: Vec<Vec<Option<Sample>>> = b_star
+    let points: Vec<(f64, f64)> = b_star
         .iter()
-        .map(|&b| {
-            log10_mu
-                .iter()
-                .map(|&l| sample(b, 10f64.powf(l)).ok())
-                .collect()
-        })
+        .flat_map(|&b| log10_mu.iter().map(move |&l| (b, l)))
         .collect();
+    let flat = samples(&points);
+    let samples: Vec<&[Option<Sample>]> = flat.chunks(log10_mu.len()).collect();
     let num = |v: Option<f64>| match v {
         Some(v) if v.is_finite() => format!("{:.1e}", round_up(v)),
         _ => "f64::INFINITY".into(),
@@ -124,11 +157,18 @@ pub fn table_source(b_star: &[f64], log10_mu: &[f64]) -> String {
     s
 }
 
-/// v rounded up to two significant digits (0 stays 0): the decimal printed with `{:.1e}`
-/// is >= v.
+/// Values below this are stored as it (an upper bound far below [`FLOOR`]; the decimal
+/// scale of a subnormal value would underflow).
+pub const TINY: f64 = 1e-300;
+
+/// v rounded up to two significant digits (0 stays 0, values below [`TINY`] become
+/// [`TINY`]): the decimal printed with `{:.1e}` is >= v.
 pub fn round_up(v: f64) -> f64 {
     if v <= 0.0 {
         return 0.0;
+    }
+    if v < TINY {
+        return TINY;
     }
     let scale = 10f64.powi(v.log10().floor() as i32 - 1);
     let r: f64 = format!("{:.1e}", (v / scale).ceil() * scale)

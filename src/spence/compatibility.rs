@@ -49,7 +49,7 @@ impl Split {
     }
 }
 
-/// |s| beyond which the root is not sought.
+/// |s| beyond which the root is not sought (below -S_MAX, c = 0 in floating point).
 const S_MAX: f64 = 1.0e7;
 
 /// Newton steps before Brent's method takes over.
@@ -150,6 +150,9 @@ impl Compatibility {
             s = next;
         }
         match (lo, hi) {
+            // Phi > 0 already at s = -S_MAX (tiny friction): the root lies below it, where
+            // c^2 < exp(-1e7) rounds to 0 as it does at s = -S_MAX itself.
+            (None, Some((s, _))) if s == -S_MAX => Ok((s, 0.0)),
             (Some(a), Some(b)) => {
                 let s = brent(|s| Ok(self.eval(s).phi), a, b, 1e-300, 300)?;
                 Ok((s, Self::error_of(s, &self.eval(s))))

@@ -34,8 +34,10 @@ pub struct SpenceSolution {
 }
 
 /// Solves Spence's approximation (the coupling must pass [`Coupling::validate`]); mu = 0 gives
-/// c = 0, q = 0. The compatibility condition has exactly one root for mu > 0, so NoConvergence
-/// only reports a root beyond |ln(c^2 / (1 - c^2))| = 1e7.
+/// c = 0, q = 0. The compatibility condition has exactly one root for mu > 0; below
+/// ln(c^2 / (1 - c^2)) = -1e7 (friction below about 3e-7 b*) that root gives c = 0 in
+/// floating point, and so does the solution (full slip). NoConvergence only reports a root
+/// above ln(c^2 / (1 - c^2)) = 1e7.
 pub fn solve(k: &Coupling) -> Result<SpenceSolution> {
     k.validate()?;
     let h = (k.bp * k.mu).atan() / PI;

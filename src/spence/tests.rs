@@ -411,6 +411,33 @@ fn extremes_stay_finite() {
     }
 }
 
+/// Below mu ~ 3e-7 b* the root of the compatibility condition lies beyond
+/// ln(c^2 / (1 - c^2)) = -1e7, so c^2 < exp(-1e7): c is 0 in floating point, as Goodman's c
+/// (theta functions) is there, and the tractions are the full-slip ones, q = mu p.
+#[test]
+fn stick_zone_below_the_smallest_double_is_empty() {
+    for b in [0.05, 0.5, 0.99] {
+        for mu in [1e-7 * b, 1e-12, 1e-300, f64::MIN_POSITIVE] {
+            let k = Coupling { bp: b, bq: b, mu };
+            let s = solve(&k).unwrap_or_else(|e| panic!("{k:?}: {e}"));
+            assert_eq!(goodman::solve(&k).unwrap().edge().c, 0.0, "{k:?}");
+            let e = s.edge();
+            assert!(e.c == 0.0 && e.one_minus_c == 1.0, "{k:?}: {e:?}");
+            assert_eq!(s.numerical_error(), 0.0);
+            for x in [0.3, -0.9, 1.0 - 1e-12] {
+                let (p, q) = s.tractions(x);
+                let g = s.edge_exponent();
+                let p_s = ((1.0 - x) * (1.0 + x)).powf(-g) / pressure_mass(g);
+                assert!(
+                    (p - p_s).abs() <= 1e-12 * p_s,
+                    "{k:?} x {x}: p {p}, p_S {p_s}"
+                );
+                assert_eq!(q, mu * p * x.signum(), "{k:?} x {x}");
+            }
+        }
+    }
+}
+
 #[test]
 fn stick_shear_is_admissible() {
     // |q| <= mu p on the stick zone (THEORY.md section 3), on a grid refined towards c.
