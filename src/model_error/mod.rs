@@ -12,10 +12,11 @@
 //! The grid spans b* = 0.005 .. 0.99 (31 rows, geometric below 0.1 and denser near 1) and
 //! mu~ = 1e-6 .. 1e6 (43 columns, log10 mu~ by 0.2 over -4 .. 1, where the stick zone opens
 //! at every b* of the grid, and coarser outside; the generator's `main.rs` says why). Entries
-//! are inf where COUPLED failed (in the table of 2026-11-23: 166 of the 1333 points, at
-//! large friction, from mu~ ~ 2e2 .. 3e5 depending on b* and from mu~ ~ 2.5 at b* = 0.1, and
-//! at one or two points per row b* <= 0.075 where the slip zones are ~1e-20 thin): the cells
-//! around them give no bound, so AUTO leaves the approximations alone there.
+//! are inf where COUPLED failed (in the table regenerated on 2026-11-23 after COUPLED's
+//! large-friction work: 62 of the 1333 points, 166 before it; at large friction from
+//! mu~ ~ 1e5 .. 1e6 for b* >= 0.45 and from ~1e4 at b* >= 0.9, from mu~ ~ 2.5 at b* = 0.1,
+//! and at one or two points per row b* <= 0.075 where the slip zones are ~1e-20 thin): the
+//! cells around them give no bound, so AUTO leaves the approximations alone there.
 //!
 //! The bound at a point is empirical, not certified: [`SAFETY`] times the largest tabulated
 //! error at the corners of its grid cell, plus [`FLOOR`] (see [`bound`]). It relies on the
@@ -23,9 +24,10 @@
 //! small). `tests/model_error_table.rs` recomputes a fifth of the committed entries (spread
 //! over every row and column) and checks the bounds against COUPLED at random points off the
 //! grid, uniform in its cells. Measured at 2000 such points each (against COUPLED at 1e-11,
-//! with the table generated on 2026-11-23; 1688 and 1685 of them had a reference and a
-//! bound), the worst error / bound was 0.505 for Goodman and 0.533 for Spence in c, 0.475 and
-//! 0.490 in the tractions.
+//! with the table's first generation on 2026-11-23; 1688 and 1685 of them had a reference and
+//! a bound), the worst error / bound was 0.505 for Goodman and 0.533 for Spence in c, 0.475 and
+//! 0.490 in the tractions; with the regenerated table, at the test's 200 points: 0.505 and
+//! 0.486 in c, 0.457 and 0.468 in the tractions.
 //!
 //! The traction error is tabulated as max(int |dp|, int |dq~|) in the reduced problem
 //! (q = delta q~ with the same p, THEORY.md section 4), so that the bound in a material with
