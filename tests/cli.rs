@@ -218,7 +218,16 @@ fn json_output_parses_and_holds_every_material_kind() {
 fn an_error_estimate_outside_the_table_is_infinite_in_text_and_null_in_json() {
     // b* = 0.995 lies outside the model-error table (b* 0.005 .. 0.99): Goodman's estimate
     // is +infinity.
-    let args = ["solve", "--effective", "1", "-0.99", "1", "1", "--mu", "0.3"];
+    let args = [
+        "solve",
+        "--effective",
+        "1",
+        "-0.99",
+        "1",
+        "1",
+        "--mu",
+        "0.3",
+    ];
     let goodman = [&args[..], &["--method", "goodman", "--points", "0"]].concat();
     let table = orthoslip(&goodman);
     assert_eq!(table.status, 0, "{}", table.stderr);
