@@ -14,12 +14,7 @@ use crate::numerics::cauchy::Weight;
 /// weight ((1 -+ t)^g - 1) / g as its parts, (1 -+ t)^g and 1, each times 1 / g (the field
 /// takes Jacobi weights; the cancellation costs eps / g, 1e-11 at g = 1e-5, in the stresses).
 fn add(families: &mut Vec<Family>, weight: Weight, coef: &[f64], scale: f64, is_q: bool) {
-    let power = match weight {
-        Weight::RightLog(g) => Some((Weight::Right(g), g)),
-        Weight::LeftLog(g) => Some((Weight::Left(g), g)),
-        _ => None,
-    };
-    if let Some((power, g)) = power {
+    if let Some((power, g)) = weight.log_parts() {
         add(families, power, coef, scale / g, is_q);
         add(families, Weight::One, coef, -scale / g, is_q);
         return;

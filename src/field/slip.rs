@@ -46,6 +46,8 @@ pub(super) struct Slip {
     u0: f64,
     p_from_x0: f64,
     log_at_x0: f64,
+    /// Gauss-Legendre nodes and weights of each graded panel.
+    rule: (Vec<f64>, Vec<f64>),
 }
 
 impl Slip {
@@ -67,6 +69,7 @@ impl Slip {
             u0: 0.0,
             p_from_x0: kernel.p_from(x0),
             log_at_x0: kernel.log_potential_q(x0),
+            rule: gauss_legendre(NODES),
         };
         s.u0 = s.integral_from_c(x0, slope_terms);
         s
@@ -78,12 +81,12 @@ impl Slip {
         if d <= 0.0 {
             return 0.0;
         }
-        let (nodes, weights) = gauss_legendre(NODES);
+        let (nodes, weights) = &self.rule;
         let mut u = 0.0;
         for j in 0..LEVELS {
             let (a, b) = (d * 0.5f64.powi(j as i32 + 1), d * 0.5f64.powi(j as i32));
             let (m, h) = (self.c + 0.5 * (a + b), 0.5 * (b - a));
-            for (t, w) in nodes.iter().zip(&weights) {
+            for (t, w) in nodes.iter().zip(weights) {
                 let (p, sxx) = slope_terms(m + h * t);
                 u += h * w * (self.nu * p + sxx / self.delta2);
             }
