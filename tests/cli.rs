@@ -522,7 +522,7 @@ fn bad_input_exits_2_and_solver_failures_exit_1_with_one_line() {
                 "1",
                 "1",
                 "--mu",
-                "1e6",
+                "1e12",
                 "--method",
                 "coupled",
                 "--tol",

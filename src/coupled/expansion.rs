@@ -3,22 +3,60 @@
 //! (c - x)^g). The wrong-c modes are left out: their coefficient vanishes at the physical c
 //! (it is the root function), and `tractions` leaves them out too. The central panel,
 //! whose series are in Y = 2 x^2 / l^2 - 1, is resampled as a plain panel on [0, l] (p and
-//! q / x are polynomials in x^2, so the fit is exact). q = delta q~.
+//! q / x are polynomials in x^2, so the fit is exact). The panels at c with a log weight
+//! ((1 -+ t)^g - 1) / g (large friction, g below [`super::mesh::LOG_BELOW`]) are resampled as
+//! plain panels graded towards c ([`graded_at_c`]). q = delta q~.
 
-use super::mesh::Pt;
+use super::mesh::{self, Pt};
 use super::{CoupledSolution, Discrete, Regime};
-use crate::field::{Expand, Expansion, Exponents, Family, Panel, fit, sample};
+use crate::field::{
+    Expand, Expansion, Exponents, Family, Panel, fit, fitted_panel, graded, sample,
+};
 use crate::numerics::cauchy::Weight;
 
-/// Adds `coef` (times `scale`) to the p or q series of the family with `weight`; a log
-/// weight ((1 -+ t)^g - 1) / g as its parts, (1 -+ t)^g and 1, each times 1 / g (the field
-/// takes Jacobi weights; the cancellation costs eps / g, 1e-11 at g = 1e-5, in the stresses).
+/// The innermost of the graded panels at c that stand for a log-weighted panel, relative
+/// to that panel's width: within it the tractions' ln|x - c| is fitted by a polynomial (an
+/// error confined to points within 1e-6 of the width from c). Not narrower: the field's
+/// panels are given by their ends' x, and a panel a few ulps of x wide has no geometry
+/// (at 3e-14 of the width the slip next to c came out with the wrong sign).
+const LOG_INNER: f64 = 1.0 / (1u64 << 20) as f64;
+
+/// A panel at c whose basis holds a log weight, as plain panels graded towards c (ratio 2,
+/// each at least its own width from c, so each fit converges like 5.8^(-n)): the field takes
+/// Jacobi weights, and the log weight split into its parts (1 -+ t)^g / g and -1 / g left
+/// the near-field transforms' own rounding multiplied by 1 / g (at b* = 0.7, mu~ = 1e6,
+/// g = 4.5e-7, the slip came out wrong in sign inside that panel).
+fn graded_at_c(d: &Discrete, panel: &mesh::Panel, delta: f64) -> Vec<Panel> {
+    let (c, w) = (d.mesh.c, d.mesh.w);
+    let width = 2.0 * panel.h;
+    let mut ends = vec![0.0];
+    ends.extend(graded(LOG_INNER * width, width));
+    ends.push(width);
+    ends.windows(2)
+        .map(|e| {
+            // signed distances from c of the subpanel's ends
+            let (s0, s1) = if panel.stick {
+                (-e[1], -e[0])
+            } else {
+                (e[0], e[1])
+            };
+            let (a, b) = (Pt::from_edge(c, w, s0), Pt::from_edge(c, w, s1));
+            let h = 0.5 * (s1 - s0);
+            fitted_panel(a.x, b.x, Weight::One, |omt, opt| {
+                let s = if opt <= omt {
+                    s0 + h * opt
+                } else {
+                    s1 - h * omt
+                };
+                let (p, q) = d.eval(Pt::from_edge(c, w, s));
+                (p, delta * q)
+            })
+        })
+        .collect()
+}
+
+/// Adds `coef` (times `scale`) to the p or q series of the family with `weight`.
 fn add(families: &mut Vec<Family>, weight: Weight, coef: &[f64], scale: f64, is_q: bool) {
-    if let Some((power, g)) = weight.log_parts() {
-        add(families, power, coef, scale / g, is_q);
-        add(families, Weight::One, coef, -scale / g, is_q);
-        return;
-    }
     let i = match families.iter().position(|f| f.weight == weight) {
         Some(i) => i,
         None => {
@@ -45,11 +83,18 @@ fn add(families: &mut Vec<Family>, weight: Weight, coef: &[f64], scale: f64, is_
 
 fn from_discrete(d: &Discrete, delta: f64) -> Expansion {
     let g = d.k.g;
+    let has_log = |panel: &mesh::Panel| {
+        let mut blocks = panel.p.iter().chain(&panel.q);
+        blocks.any(|b| b.basis.weight(g).log_parts().is_some())
+    };
     let panels = d
         .mesh
         .panels
         .iter()
-        .map(|panel| {
+        .flat_map(|panel| {
+            if has_log(panel) {
+                return graded_at_c(d, panel, delta);
+            }
             let (a, b) = (panel.a.x, panel.b.x);
             if panel.central {
                 let (m, h) = (0.5 * (a + b), 0.5 * (b - a));
@@ -57,7 +102,7 @@ fn from_discrete(d: &Discrete, delta: f64) -> Expansion {
                     let x = m + h * t;
                     d.eval(Pt { x, u: 1.0 - x })
                 };
-                return Panel {
+                return vec![Panel {
                     a,
                     b,
                     families: vec![Family {
@@ -65,7 +110,7 @@ fn from_discrete(d: &Discrete, delta: f64) -> Expansion {
                         p: fit(|t| at(t).0),
                         q: fit(|t| delta * at(t).1),
                     }],
-                };
+                }];
             }
             let mut families = Vec::new();
             let mut col = panel.p_offset;
@@ -88,7 +133,7 @@ fn from_discrete(d: &Discrete, delta: f64) -> Expansion {
                     add(&mut families, block.basis.weight(g), coef, delta, true);
                 }
             }
-            Panel { a, b, families }
+            vec![Panel { a, b, families }]
         })
         .collect();
     Expansion { panels }

@@ -185,7 +185,7 @@ mod tests {
                 if !(-32.0..=-4.6).contains(&fs.ln_c) {
                     continue;
                 }
-                let s = crate::coupled::panels(&k, 1e-12).unwrap();
+                let s = crate::coupled::panels(&k, 1e-12, f64::INFINITY).unwrap();
                 let (c, law) = (s.edge().c, fs.ln_c.exp());
                 assert!(
                     (c - law).abs() <= fs.numerical_error(),

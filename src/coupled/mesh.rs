@@ -357,6 +357,26 @@ impl Mesh {
         })
     }
 
+    /// The columns of the two wrong-c modes with their panels' half-widths,
+    /// (q's on the stick panel at c, p's on the slip panel at c); None when uncoupled.
+    pub(crate) fn wrong_c_columns(&self) -> Option<((usize, f64), (usize, f64))> {
+        let column = |blocks: &[Block], offset: usize| {
+            let mut col = offset;
+            for b in blocks {
+                if b.basis.is_wrong_c() {
+                    return Some(col);
+                }
+                col += b.count;
+            }
+            None
+        };
+        let (stick, slip) = (&self.panels[self.c_stick], &self.panels[self.c_stick + 1]);
+        Some((
+            (column(&stick.q, stick.q_offset)?, stick.h),
+            (column(&slip.p, slip.p_offset)?, slip.h),
+        ))
+    }
+
     /// Index of the panel holding the point x of [0, 1).
     pub(crate) fn locate(&self, x: Pt) -> usize {
         self.panels

@@ -13,7 +13,8 @@
 //!   1 - c ~ 1e-12 are both carried to full relative accuracy;
 //! - the order is raised (4, then 6, 8, 11, 13, 16, ...) until two successive orders agree
 //!   on c within the tolerance (twice their difference plus both roots' location
-//!   uncertainties) and on the tractions within max(100 tol, 1e-9). Each order starts
+//!   uncertainties) and on the tractions within max(100 tol, 1e-9), and the traction
+//!   estimate meets the traction tolerance ([`solve_to`]). Each order starts
 //!   from the previous order's root and slope: one secant step, usually two solves.
 //!
 //! Which root: defect < 0 for small c (checked at a c far below Goodman's estimate, walking
@@ -621,7 +622,7 @@ pub fn solve(k: &Coupling, tol: f64) -> Result<CoupledSolution> {
     if let Some(s) = limit_regime(k, tol, tol) {
         return Ok(s);
     }
-    let s = panels(k, tol)?;
+    let s = panels(k, tol, f64::INFINITY)?;
     if s.error > tol {
         return Err(not_met(s.error, tol, &s));
     }
@@ -669,7 +670,7 @@ pub fn solve_to(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSolu
     let asked = tol_asked;
     loop {
         // the panels' own tolerance may be missed as long as what was asked for is met
-        let s = panels(k, tol)?;
+        let s = panels(k, tol, traction_tol)?;
         let e = s.traction_error();
         if s.error <= asked && e <= traction_tol {
             return Ok(s);
@@ -713,9 +714,10 @@ fn limit_regime(k: &Coupling, tol: f64, traction_tol: f64) -> Option<CoupledSolu
     (nb.covered() && meets(&nb)).then(|| CoupledSolution::from_profile(nb, Regime::NearBonded))
 }
 
-/// The panel discretisation of (E1)-(E4) for `k` (mu > 0) to |c - c_exact| <= tol, or, where
-/// no search reaches that, the one with the smallest estimate (the callers compare).
-fn panels(k: &Coupling, tol: f64) -> Result<CoupledSolution> {
+/// The panel discretisation of (E1)-(E4) for `k` (mu > 0) to |c - c_exact| <= tol and a
+/// traction estimate <= traction_tol, or, where no search reaches that, the one with the
+/// smallest estimate of c (the callers compare).
+fn panels(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSolution> {
     let (r, delta) = if k.bp > 0.0 { k.reduced() } else { (*k, 1.0) };
     let consts = Constants {
         bp: r.bp,
@@ -769,7 +771,8 @@ fn panels(k: &Coupling, tol: f64) -> Result<CoupledSolution> {
             }
             None => break,
         };
-        match panels_from(k, tol, consts, delta, oversample, start) {
+        let tols = (tol, traction_tol);
+        match panels_from(k, tols, consts, delta, oversample, start) {
             Ok((s, Some(why))) => {
                 let e = s.edge;
                 inadmissible_roots.push((e.c, e.one_minus_c, why));
@@ -830,10 +833,12 @@ impl Start {
 }
 
 /// [`panels`] with the first root found from `start`: the solution at the first order pair
-/// that agrees, else at the last order tried, and what makes it inadmissible, if anything.
+/// that agrees (c within tol, and the tractions' estimate within traction_tol and their
+/// relative gap within [`TRACTION_RATIO`] tol), else at the last order tried, and what makes
+/// it inadmissible, if anything.
 fn panels_from(
     k: &Coupling,
-    tol: f64,
+    (tol, traction_tol): (f64, f64),
     consts: Constants,
     delta: f64,
     oversample: f64,
@@ -848,8 +853,20 @@ fn panels_from(
         // the next order's unknowns grow with the order (the panels stay)
         let next_n = ORDERS.iter().find(|&&m| m > n);
         let next_unknowns = next_n.map(|&m| next.discrete.mesh.unknowns * m / n);
-        let met = diff <= tol && gap <= (TRACTION_RATIO * tol).max(TRACTION_FLOOR);
-        if met || next_unknowns.is_none_or(|u| u > MAX_UNKNOWNS) {
+        let close = diff <= tol && gap <= (TRACTION_RATIO * tol).max(TRACTION_FLOOR);
+        let last = next_unknowns.is_none_or(|u| u > MAX_UNKNOWNS);
+        if close || last {
+            let (dp, dq) = traction_parts(
+                |x| next.discrete.eval(Pt { x, u: 1.0 - x }),
+                |x| root.discrete.eval(Pt { x, u: 1.0 - x }),
+                [c, root.discrete.mesh.c],
+            );
+            let traction_error =
+                ORDER_SAFETY * (dp + delta * dq) + next.discrete.wrong_c_norm(delta, diff);
+            if traction_error > traction_tol && !last {
+                root = next;
+                continue;
+            }
             // met, or the best this search reaches (the callers compare its estimates with
             // what they were asked for)
             let violation = inadmissible(&next.discrete, consts.mu);
@@ -858,17 +875,11 @@ fn panels_from(
             } else {
                 StickEdge::from_one_minus_c(w)
             };
-            let (dp, dq) = traction_parts(
-                |x| next.discrete.eval(Pt { x, u: 1.0 - x }),
-                |x| root.discrete.eval(Pt { x, u: 1.0 - x }),
-                [c, root.discrete.mesh.c],
-            );
             let s = CoupledSolution {
                 coupling: *k,
                 edge,
                 error: diff,
-                traction_error: ORDER_SAFETY * (dp + delta * dq)
-                    + next.discrete.wrong_c_norm(delta, diff),
+                traction_error,
                 delta,
                 regime: Regime::Panels(next.discrete),
                 order: n,

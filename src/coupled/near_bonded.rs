@@ -289,7 +289,7 @@ mod tests {
                     mu: m,
                 };
                 let nb = NearBonded::new(&k);
-                let s = crate::coupled::panels(&k, 1e-10).unwrap();
+                let s = crate::coupled::panels(&k, 1e-10, f64::INFINITY).unwrap();
                 let w = s.edge().one_minus_c;
                 let (lo, hi) = ln_w_range(b, m).unwrap();
                 assert!(

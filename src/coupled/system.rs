@@ -2,8 +2,9 @@
 //! H[q] = -bq p on 0 < x < c, (E3) q = mu p on c < x < 1 built into the basis, (E4)
 //! int p = 1, with p even and q odd (so H over (-1, 1) is the panel integral at x plus or
 //! minus the mirrored one at -x). Unknowns: the coefficients of the panel bases of
-//! [`super::mesh`], including the two wrong-c modes (|x| - c)^(g-1) whose coefficient defect
-//! vanishes exactly at the physical c (the compatibility condition, THEORY.md section 5).
+//! [`super::mesh`], with the two wrong-c modes |x - c|^(g-1) as one unknown ([`WrongCFold`])
+//! whose coefficient, the defect, vanishes exactly at the physical c (the compatibility
+//! condition, THEORY.md section 5). On the slip panels the unknowns are scaled to q = mu p.
 //!
 //! Each panel gets OVERSAMPLE times as many collocation points (Gauss-Legendre points of the
 //! panel) as it has unknowns; (E1) with p ~ (1-x)^(-g) has index 1, so (E4) fixes the scale.
@@ -13,7 +14,7 @@ use crate::error::{Error, Result};
 use crate::numerics::cauchy::WeightedFamily;
 use crate::numerics::orthopoly::{legendre, legendre_sum};
 use crate::numerics::quadrature::gauss_legendre_nodes;
-use crate::numerics::special::exprel;
+use crate::numerics::special::{exprel, sin_pi};
 use faer::Mat;
 use faer::linalg::solvers::SolveLstsq;
 use std::f64::consts::PI;
@@ -211,6 +212,47 @@ fn add_hilbert(
     }
 }
 
+/// The two wrong-c modes as one unknown, the local homogeneous solution at c: q = A (c - x)^(g-1)
+/// on the stick side and p = B (x - c)^(g-1) on the slip side, where (E1) at x < c
+/// (H[(x - c)_+^(g-1)] = |x - c|^(g-1) / sin(pi (g - 1)) there) fixes B = -bp sin(pi g) A
+/// ((E2) then holds by the exponent equation cot(pi g) = bp mu). Two free columns instead
+/// became nearly dependent at large friction (both tend to delta(x - c) / g), which left the
+/// defect determined only to eps / g.
+#[derive(Clone, Copy, Debug)]
+struct WrongCFold {
+    /// q's column (kept; its coefficient is the defect).
+    q: usize,
+    /// p's column (dropped from the system).
+    p: usize,
+    /// p's coefficient per unit of q's, in the panels' local weights (1 -+ t)^(g-1).
+    ratio: f64,
+}
+
+impl WrongCFold {
+    fn new(mesh: &Mesh, k: Constants) -> Option<Self> {
+        let ((q, hq), (p, hp)) = mesh.wrong_c_columns()?;
+        let ratio = -k.bp * sin_pi(k.g) * (hq / hp).powf(1.0 - k.g);
+        Some(Self { q, p, ratio })
+    }
+
+    /// The system's column of unknown j (None for the folded one).
+    fn column(fold: Option<Self>, j: usize) -> Option<usize> {
+        match fold {
+            Some(f) if j == f.p => None,
+            Some(f) if j > f.p => Some(j - 1),
+            _ => Some(j),
+        }
+    }
+
+    /// Folds p's entry of a row into q's.
+    fn apply(fold: Option<Self>, r: &mut [f64]) {
+        if let Some(f) = fold {
+            r[f.q] += f.ratio * r[f.p];
+            r[f.p] = 0.0;
+        }
+    }
+}
+
 /// Assembles and solves the system for stick edge (c, w = 1 - c) at order n, with
 /// `oversample` collocation points per unknown.
 pub(crate) fn solve_fixed(
@@ -240,7 +282,17 @@ pub(crate) fn solve_fixed(
         vec![0.0; deg],
         vec![0.0; deg],
     );
-    let mut a = Mat::<f64>::zeros(nr, unknowns);
+    // unknowns on the slip panels: q = mu p (O(1) where p is O(1 / mu) at large friction),
+    // so that no row's largest entry is one whose term is mu times smaller (a row scaled by
+    // it lost eps mu ~ eps / g relative in (E1) on the slip zones)
+    let slip_scale = 1.0 / k.mu.max(1.0);
+    let mut col_scale = vec![1.0; unknowns];
+    for panel in mesh.panels.iter().filter(|p| !p.stick) {
+        col_scale[panel.p_offset..panel.p_offset + panel.np()].fill(slip_scale);
+    }
+    let fold = WrongCFold::new(&mesh, k);
+    let columns = unknowns - usize::from(fold.is_some());
+    let mut a = Mat::<f64>::zeros(nr, columns);
     let mut r = vec![0.0; unknowns];
     for (i, row) in rows.iter().enumerate() {
         r.fill(0.0);
@@ -275,9 +327,13 @@ pub(crate) fn solve_fixed(
                 col += 1;
             }
         }
+        WrongCFold::apply(fold, &mut r);
+        r.iter_mut().zip(&col_scale).for_each(|(v, s)| *v *= s);
         let scale = 1.0 / r.iter().fold(0.0f64, |m, v| m.max(v.abs())).max(1e-300);
         for (j, v) in r.iter().enumerate() {
-            a[(i, j)] = *v * scale;
+            if let Some(col) = WrongCFold::column(fold, j) {
+                a[(i, col)] = *v * scale;
+            }
         }
     }
     // (E4): int_{-1}^{1} p = 1 (weighted row; the solution is rescaled to it exactly below)
@@ -301,13 +357,23 @@ pub(crate) fn solve_fixed(
     }
     const NORM_WEIGHT: f64 = 1e3;
     let nscale = NORM_WEIGHT / norm.iter().fold(0.0f64, |m, v| m.max(v.abs()));
-    for (j, v) in norm.iter().enumerate() {
-        a[(last, j)] = v * nscale;
+    let mut folded = norm.clone();
+    WrongCFold::apply(fold, &mut folded);
+    folded.iter_mut().zip(&col_scale).for_each(|(v, s)| *v *= s);
+    for (j, v) in folded.iter().enumerate() {
+        if let Some(col) = WrongCFold::column(fold, j) {
+            a[(last, col)] = v * nscale;
+        }
     }
     let mut rhs = Mat::<f64>::zeros(nr, 1);
     rhs[(last, 0)] = nscale;
     let x = a.col_piv_qr().solve_lstsq(&rhs);
-    let mut coef: Vec<f64> = (0..unknowns).map(|i| x[(i, 0)]).collect();
+    let mut coef: Vec<f64> = (0..unknowns)
+        .map(|j| WrongCFold::column(fold, j).map_or(0.0, |col| x[(col, 0)] * col_scale[j]))
+        .collect();
+    if let Some(f) = fold {
+        coef[f.p] = f.ratio * coef[f.q];
+    }
     let mass: f64 = coef.iter().zip(&norm).map(|(c, v)| c * v).sum();
     for v in coef.iter_mut() {
         *v /= mass;

@@ -42,7 +42,7 @@ mod kernel;
 mod slip;
 
 pub(crate) use expansion::{
-    Expand, Expansion, Exponents, Family, Panel, fit, fitted_panel, sample,
+    Expand, Expansion, Exponents, Family, Panel, fit, fitted_panel, graded, sample,
 };
 
 use crate::material::Effective;
