@@ -519,6 +519,16 @@ impl<'a> Level<'a> {
                 if step.abs() <= self.xtol || f1 == 0.0 {
                     return Ok((lc1, step.abs()));
                 }
+                if f1.abs() >= f0.abs() && f0 * f1 < 0.0 && (lc1 - lc0).abs() > self.xtol {
+                    // overshot a root by far (defect far from linear: the auxetic
+                    // b* = 1 - 5e-7, mu~ = 10 at order 11): Brent in the bracket
+                    let ((a, fa), (b, fb)) = if f0 < 0.0 {
+                        ((lc0, f0), (lc1, f1))
+                    } else {
+                        ((lc1, f1), (lc0, f0))
+                    };
+                    return Ok((self.brent(a, b, fa, fb)?, self.xtol));
+                }
                 if f1.abs() >= f0.abs() {
                     // no progress: defect's rounding noise reached. The root lies between lc0
                     // and lc1 if defect changes sign there, else within the noise's size
@@ -846,7 +856,8 @@ fn panels_from(
 ) -> Result<(CoupledSolution, Option<String>)> {
     let mut root = first_root(consts, start, oversample)?;
     for &n in ORDERS.iter().filter(|&&n| n > start.order()) {
-        let next = root_at_order(consts, n, &root, tol, oversample, start)?;
+        let tols = (tol, traction_tol / delta.max(1.0));
+        let next = root_at_order(consts, n, &root, tols, oversample, start)?;
         let (c, w) = edge_of(next.lc);
         let diff = order_difference(&root, &next);
         let gap = traction_gap(&next.discrete, &root.discrete);
@@ -920,17 +931,24 @@ struct Root {
 /// The root at order n, started from the previous order's root and slope; if that fails
 /// (a step left the layout's range or the root moved away), the first-root search again
 /// (scan from below at the scan order, Brent at this order). Each order locates its root to
-/// 5% of the tolerance in c (dc = c (1 - c) d lc).
+/// 5% of the tolerance in c (dc = c (1 - c) d lc) and of the traction tolerance.
 fn root_at_order(
     consts: Constants,
     n: usize,
     prev: &Root,
-    tol: f64,
+    (tol, traction_tol): (f64, f64),
     oversample: f64,
     start: Start,
 ) -> Result<Root> {
     let (c_prev, w_prev) = edge_of(prev.lc);
-    let xtol = (0.05 * tol / (c_prev * w_prev)).clamp(1e-13, 1e-3);
+    // the wrong-c modes left out of the tractions count in their estimate in proportion to
+    // the defect left at the root ([`Discrete::wrong_c_norm`]): 5% of the traction tolerance
+    // at most (at c = 8.5e-7, the auxetic b* = 1 - 5e-7, mu~ = 10, the tolerance on c alone
+    // left a defect whose modes weighed 5e-8)
+    let per_lc = prev.slope.abs() * prev.discrete.wrong_c_per_defect(tol);
+    let xtol = (0.05 * tol / (c_prev * w_prev))
+        .min(0.05 * traction_tol / per_lc)
+        .clamp(1e-13, 1e-3);
     let fams = Families::new(consts.g, n);
     let mut level = Level::new(consts, n, &fams, xtol, oversample);
     let (lc, unc) = match level.root_near(prev.lc, prev.slope, prev.step) {

@@ -454,6 +454,17 @@ impl Discrete {
         2.0 * sum
     }
 
+    /// [`Self::wrong_c_norm`] (delta = 1) per unit |defect|: the norm is linear in the
+    /// modes' coefficient, which is the defect.
+    pub(crate) fn wrong_c_per_defect(&self, dc: f64) -> f64 {
+        let d = self.defect.abs();
+        if d > 0.0 {
+            self.wrong_c_norm(1.0, dc) / d
+        } else {
+            0.0
+        }
+    }
+
     /// (p, q) at 0 <= x < 1 given as a [`Pt`].
     pub(crate) fn eval(&self, x: Pt) -> (f64, f64) {
         let panel = &self.mesh.panels[self.mesh.locate(x)];
