@@ -96,3 +96,25 @@ fn every_ok_answer_is_admissible_and_c_grows_with_mu() {
         bad.join("\n")
     );
 }
+
+/// Beyond the panels' reach (mu~ = 1e12, where COUPLED extrapolates in 1/mu~ from the panels
+/// at 1e6, 2e6, 4e6): the same checks, on the extrapolated tractions and the slip of their
+/// field, and c at least its value at mu~ = 1e6.
+#[test]
+fn extrapolated_large_friction_is_admissible() {
+    let mut bad = Vec::new();
+    for b in [0.45, 0.7, 0.9, 0.99] {
+        let (Some(s), Some(s6)) = (
+            solve(b, 1e12, Method::Coupled),
+            solve(b, 1e6, Method::Coupled),
+        ) else {
+            panic!("b* = {b}: no answer at mu~ = 1e12 or 1e6");
+        };
+        let scene = format!("b* = {b}, mu~ = 1e12");
+        bad.extend(violations(&s, &scene));
+        if s.c() < s6.c() - s.error_estimate() - s6.error_estimate() {
+            bad.push(format!("{scene}: c = {} below {} at 1e6", s.c(), s6.c()));
+        }
+    }
+    assert!(bad.is_empty(), "{}", bad.join("\n"));
+}

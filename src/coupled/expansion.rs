@@ -146,6 +146,7 @@ impl Expand for CoupledSolution {
             Regime::Uncoupled(g) => g.expansion(),
             Regime::FullSlip(f) => f.expansion(),
             Regime::NearBonded(b) => b.expansion(),
+            Regime::LargeFriction(l) => l.expansion(),
             // mu = 0: p = p0 exactly, q = 0
             Regime::Frictionless => sample(
                 self,

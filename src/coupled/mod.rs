@@ -40,7 +40,9 @@
 //! - a stick zone below the tolerance: the full-slip limit with the law
 //!   c ~ 4 (1 - b*^2)^(pi / (2 b* mu~)) ([`full_slip`]);
 //! - slip zones below the tolerance (small b*): the bonded punch with the law
-//!   ln((1 - c) / 8) = -kappa arctan(mu~) / eps ([`near_bonded`]).
+//!   ln((1 - c) / 8) = -kappa arctan(mu~) / eps ([`near_bonded`]);
+//! - mu~ >= 1e7, beyond the panels' reach: the quadratic in 1/mu~ through the panels'
+//!   solutions at mu~ = 1e6, 2e6, 4e6 ([`large_friction`]).
 //!
 //! Range of the panels: `T_MIN` < lc < `T_MAX`, i.e. c > 2e-35 and 1 - c > 4e-18 (outside
 //! it NoConvergence says so); the number of panels grows like log(1 / min(c, 1 - c)), and
@@ -53,6 +55,7 @@
 
 mod expansion;
 pub(crate) mod full_slip;
+mod large_friction;
 mod mesh;
 pub(crate) mod near_bonded;
 mod system;
@@ -66,6 +69,7 @@ use crate::numerics::quadrature::gauss_legendre_nodes;
 use crate::numerics::roots::brent;
 use crate::problem::{Coupling, Profile, StickEdge, traction_parts, validate_tolerance};
 use full_slip::FullSlip;
+use large_friction::{LargeFriction, MU_EXTRAPOLATE};
 use mesh::{Layout, Pt};
 use near_bonded::NearBonded;
 use system::{Constants, Discrete, Families, solve_fixed};
@@ -196,6 +200,8 @@ enum Regime {
     FullSlip(FullSlip),
     /// Slip zones below the tolerance: the bonded punch ([`near_bonded`]).
     NearBonded(NearBonded),
+    /// mu~ beyond the panels' reach: extrapolated in 1/mu~ ([`large_friction`]).
+    LargeFriction(Box<LargeFriction>),
 }
 
 impl CoupledSolution {
@@ -209,6 +215,7 @@ impl CoupledSolution {
     pub fn unknowns(&self) -> usize {
         match &self.regime {
             Regime::Panels(d) => d.mesh.unknowns,
+            Regime::LargeFriction(l) => l.unknowns(),
             _ => 0,
         }
     }
@@ -255,6 +262,7 @@ impl Profile for CoupledSolution {
             Regime::Uncoupled(g) => g.half_line_tractions(x),
             Regime::FullSlip(f) => f.half_line_tractions(x),
             Regime::NearBonded(b) => b.half_line_tractions(x),
+            Regime::LargeFriction(l) => l.half_line_tractions(x),
         }
     }
 }
@@ -632,7 +640,7 @@ pub fn solve(k: &Coupling, tol: f64) -> Result<CoupledSolution> {
     if let Some(s) = limit_regime(k, tol, tol) {
         return Ok(s);
     }
-    let s = panels(k, tol, f64::INFINITY)?;
+    let s = beyond_limits(k, tol, f64::INFINITY)?;
     if s.error > tol {
         return Err(not_met(s.error, tol, &s));
     }
@@ -680,7 +688,7 @@ pub fn solve_to(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSolu
     let asked = tol_asked;
     loop {
         // the panels' own tolerance may be missed as long as what was asked for is met
-        let s = panels(k, tol, traction_tol)?;
+        let s = beyond_limits(k, tol, traction_tol)?;
         let e = s.traction_error();
         if s.error <= asked && e <= traction_tol {
             return Ok(s);
@@ -722,6 +730,19 @@ fn limit_regime(k: &Coupling, tol: f64, traction_tol: f64) -> Option<CoupledSolu
     }
     let nb = NearBonded::new(k);
     (nb.covered() && meets(&nb)).then(|| CoupledSolution::from_profile(nb, Regime::NearBonded))
+}
+
+/// The panels ([`panels`]), or beyond [`MU_EXTRAPOLATE`] their extrapolation in 1/mu~
+/// ([`large_friction`]).
+fn beyond_limits(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSolution> {
+    if k.bp > 0.0 && k.reduced().0.mu >= MU_EXTRAPOLATE {
+        let l = LargeFriction::new(k, tol, traction_tol)?;
+        let order = l.order();
+        let mut s = CoupledSolution::from_profile(l, |l| Regime::LargeFriction(Box::new(l)));
+        s.order = order;
+        return Ok(s);
+    }
+    panels(k, tol, traction_tol)
 }
 
 /// The panel discretisation of (E1)-(E4) for `k` (mu > 0) to |c - c_exact| <= tol and a

@@ -114,7 +114,7 @@ pub(crate) fn integral_ref(
 
 /// Checks (E1) on |x| < 1, (E2) on |x| < c, int p = 1, |q| <= mu p on the stick zone and the
 /// slip direction, all against the reference quadratures; returns the worst relative residual.
-fn check_solution(k: &Coupling, s: &CoupledSolution) -> f64 {
+pub(crate) fn check_solution(k: &Coupling, s: &CoupledSolution) -> f64 {
     let e = s.edge();
     let (c, w, g) = (e.c, e.one_minus_c, k.edge_exponent());
     let p = |t: f64| s.tractions(t).0;
