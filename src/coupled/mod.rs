@@ -46,7 +46,7 @@
 //! thin slip zones cost seconds (1 - c = 1e-14 at b* = 0.1: ~2000 unknowns). Between the
 //! panels' range and the bonded limit's, i.e. for b* below about 0.12 with 1 - c from about
 //! 1e-21 to 4e-18 at tolerance 1e-10 (1e-17 to 4e-18 at 1e-8), no regime answers yet.
-//! A panel solve is 6-9 cheap order-4 solves, then about two column-pivoted least-squares
+//! A panel solve is 6-9 cheap order-4 solves, then about two Householder least-squares
 //! solves per order (100-350 unknowns at the last); `cargo run --release --example
 //! coupled_timing` measures the cost.
 

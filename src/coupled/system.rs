@@ -11,11 +11,10 @@
 use super::mesh::{Basis, Block, Layout, Mesh, Panel, Pt};
 use crate::error::{Error, Result};
 use crate::numerics::cauchy::WeightedFamily;
+use crate::numerics::lstsq;
 use crate::numerics::orthopoly::{legendre, legendre_sum};
 use crate::numerics::quadrature::gauss_legendre_nodes;
 use crate::numerics::special::exprel;
-use faer::Mat;
-use faer::linalg::solvers::SolveLstsq;
 use std::f64::consts::PI;
 
 /// Collocation points per unknown: the oversampled system is solved in the least-squares
@@ -240,10 +239,9 @@ pub(crate) fn solve_fixed(
         vec![0.0; deg],
         vec![0.0; deg],
     );
-    let mut a = Mat::<f64>::zeros(nr, unknowns);
-    let mut r = vec![0.0; unknowns];
-    for (i, row) in rows.iter().enumerate() {
-        r.fill(0.0);
+    // row-major: each row is assembled in place
+    let mut a = vec![0.0; nr * unknowns];
+    for (row, r) in rows.iter().zip(a.chunks_exact_mut(unknowns)) {
         let own = &mesh.panels[row.panel];
         for src in &mesh.panels {
             // (E1) rows: H[p]; (E2) rows: H[q], q odd on the stick zone and mu p sgn x (p's
@@ -256,7 +254,7 @@ pub(crate) fn solve_fixed(
                 (&src.p, src.p_offset, Parity::Odd, k.mu)
             };
             add_hilbert(
-                fams, src, blocks, offset, row.x, parity, scale, &mut buf, &mut buf2, &mut r,
+                fams, src, blocks, offset, row.x, parity, scale, &mut buf, &mut buf2, r,
             );
         }
         // local terms: (E1) - bp q(x), (E2) + bq p(x)
@@ -276,9 +274,7 @@ pub(crate) fn solve_fixed(
             }
         }
         let scale = 1.0 / r.iter().fold(0.0f64, |m, v| m.max(v.abs())).max(1e-300);
-        for (j, v) in r.iter().enumerate() {
-            a[(i, j)] = *v * scale;
-        }
+        r.iter_mut().for_each(|v| *v *= scale);
     }
     // (E4): int_{-1}^{1} p = 1 (weighted row; the solution is rescaled to it exactly below)
     let last = nr - 1;
@@ -302,12 +298,11 @@ pub(crate) fn solve_fixed(
     const NORM_WEIGHT: f64 = 1e3;
     let nscale = NORM_WEIGHT / norm.iter().fold(0.0f64, |m, v| m.max(v.abs()));
     for (j, v) in norm.iter().enumerate() {
-        a[(last, j)] = v * nscale;
+        a[last * unknowns + j] = v * nscale;
     }
-    let mut rhs = Mat::<f64>::zeros(nr, 1);
-    rhs[(last, 0)] = nscale;
-    let x = a.col_piv_qr().solve_lstsq(&rhs);
-    let mut coef: Vec<f64> = (0..unknowns).map(|i| x[(i, 0)]).collect();
+    let mut rhs = vec![0.0; nr];
+    rhs[last] = nscale;
+    let mut coef = lstsq::solve(&a, unknowns, &rhs);
     let mass: f64 = coef.iter().zip(&norm).map(|(c, v)| c * v).sum();
     for v in coef.iter_mut() {
         *v /= mass;
