@@ -11,7 +11,7 @@
 use super::mesh::{Basis, Block, Layout, Mesh, Panel, Pt};
 use crate::error::{Error, Result};
 use crate::numerics::cauchy::WeightedFamily;
-use crate::numerics::lstsq;
+use crate::numerics::lstsq::LeastSquares;
 use crate::numerics::orthopoly::{legendre, legendre_sum};
 use crate::numerics::quadrature::gauss_legendre_nodes;
 use crate::numerics::special::exprel;
@@ -211,7 +211,8 @@ fn add_hilbert(
 }
 
 /// Assembles and solves the system for stick edge (c, w = 1 - c) at order n, with
-/// `oversample` collocation points per unknown.
+/// `oversample` collocation points per unknown, by `ls`.
+#[allow(clippy::too_many_arguments)]
 pub(crate) fn solve_fixed(
     k: Constants,
     c: f64,
@@ -220,6 +221,7 @@ pub(crate) fn solve_fixed(
     fams: &Families,
     layout: &Layout,
     oversample: f64,
+    ls: &mut LeastSquares,
 ) -> Result<Discrete> {
     if !(c > 1e-300 && w > 1e-300 && c <= 1.0 && w <= 1.0) {
         return Err(Error::NoConvergence(format!(
@@ -302,7 +304,7 @@ pub(crate) fn solve_fixed(
     }
     let mut rhs = vec![0.0; nr];
     rhs[last] = nscale;
-    let mut coef = lstsq::solve(&a, unknowns, &rhs);
+    let mut coef = ls.solve(&a, unknowns, &rhs);
     let mass: f64 = coef.iter().zip(&norm).map(|(c, v)| c * v).sum();
     for v in coef.iter_mut() {
         *v /= mass;

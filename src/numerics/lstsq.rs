@@ -20,21 +20,33 @@ use faer::linalg::solvers::SolveLstsq;
 /// fallback, coupled's unit tests failed (ratios below 1e-14 and exact zeros).
 const RANK_RATIO: f64 = 1e-13;
 
-/// x minimising ||A x - b||, A given row-major with n columns (and b.len() rows).
-pub(crate) fn solve(a: &[f64], n: usize, b: &[f64]) -> Vec<f64> {
-    let a = MatRef::from_row_major_slice(a, b.len(), n);
-    let b = MatRef::from_column_major_slice(b, b.len(), 1);
-    let qr = a.qr();
-    let r = qr.thin_R();
-    let (lo, hi) = (0..n).fold((f64::INFINITY, 0.0f64), |(lo, hi), i| {
-        let d = r[(i, i)].abs();
-        (lo.min(d), hi.max(d))
-    });
-    // (NaN ratios also go to the pivoted QR)
-    let x = if lo >= RANK_RATIO * hi {
-        qr.solve_lstsq(b)
-    } else {
-        a.col_piv_qr().solve_lstsq(b)
-    };
-    (0..n).map(|i| x[(i, 0)]).collect()
+/// The least-squares solver of one sequence of similar systems (a root search): once a
+/// system needed the pivoted QR, the next ones go to it directly.
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct LeastSquares {
+    pivot: bool,
+}
+
+impl LeastSquares {
+    /// x minimising ||A x - b||, A given row-major with n columns (and b.len() rows).
+    pub(crate) fn solve(&mut self, a: &[f64], n: usize, b: &[f64]) -> Vec<f64> {
+        let a = MatRef::from_row_major_slice(a, b.len(), n);
+        let b = MatRef::from_column_major_slice(b, b.len(), 1);
+        if !self.pivot {
+            let qr = a.qr();
+            let r = qr.thin_R();
+            let (lo, hi) = (0..n).fold((f64::INFINITY, 0.0f64), |(lo, hi), i| {
+                let d = r[(i, i)].abs();
+                (lo.min(d), hi.max(d))
+            });
+            // (a NaN ratio also goes to the pivoted QR)
+            if lo >= RANK_RATIO * hi {
+                let x = qr.solve_lstsq(b);
+                return (0..n).map(|i| x[(i, 0)]).collect();
+            }
+            self.pivot = true;
+        }
+        let x = a.col_piv_qr().solve_lstsq(b);
+        (0..n).map(|i| x[(i, 0)]).collect()
+    }
 }
