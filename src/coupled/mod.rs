@@ -158,11 +158,6 @@ const ORDER_SAFETY: f64 = 2.0;
 /// is 1e-12 .. 1e-13 in c at orders 10-26).
 const FINE_BELOW: f64 = 1e-11;
 
-/// Largest relative difference between the secant slope of the defect at one order and the
-/// slope at the order below (which agreed to 1.2% or better where rounding noise does not
-/// decide, measured) before the secant is taken for noise.
-const SLOPE_AGREEMENT: f64 = 0.1;
-
 /// Accuracy in lc of the first root at the scan order (a start for the higher orders).
 const SCAN_XTOL: f64 = 1e-4;
 
@@ -534,9 +529,9 @@ impl<'a> Level<'a> {
                 }
                 let f1 = self.defect(lc1)?;
                 // the secant slope, unless noise has made it useless: then the lower order's
-                let secant = (f1 - f0) / (lc1 - lc0);
-                let s = if secant.is_finite() && secant * slope > 0.0 {
-                    secant
+                let s = (f1 - f0) / (lc1 - lc0);
+                let s = if s.is_finite() && s * slope > 0.0 {
+                    s
                 } else {
                     slope
                 };
@@ -544,11 +539,7 @@ impl<'a> Level<'a> {
                 if step.abs() <= self.xtol || f1 == 0.0 {
                     return Ok((lc1, step.abs()));
                 }
-                // the slopes of successive orders agree far better than SLOPE_AGREEMENT: a
-                // secant that does not is made of rounding noise, and further steps would
-                // only wander within it
-                let agrees = (secant / slope - 1.0).abs() <= SLOPE_AGREEMENT;
-                if f1.abs() >= f0.abs() || !agrees {
+                if f1.abs() >= f0.abs() {
                     // no progress: defect's rounding noise reached. The root lies between lc0
                     // and lc1 if defect changes sign there, else within the noise's size
                     // over the slope
