@@ -1,11 +1,45 @@
 //! Times METHOD_COUPLED on one core: solve (tol = 1e-10 and 1e-6) and traction evaluation,
-//! isotropic plane-strain steel and the carbon/epoxy ply of THEORY.md section 2.
+//! isotropic plane-strain steel and the carbon/epoxy ply of THEORY.md section 2, in CPU time
+//! of the thread (the machine may be shared): the median over the repetitions.
 //! Optional argument: the number of repetitions per case (default 20). "cold": each
 //! repetition with its own edge exponent g (mu shifted by 1e-9).
 use orthoslip::Material;
 use orthoslip::coupled::solve;
 use orthoslip::problem::{Coupling, Profile};
-use std::time::Instant;
+
+/// struct timespec of Linux (64-bit).
+#[repr(C)]
+struct Timespec {
+    sec: i64,
+    nsec: i64,
+}
+
+unsafe extern "C" {
+    fn clock_gettime(clock: i32, out: *mut Timespec) -> i32;
+}
+
+/// CPU time of this thread in seconds (CLOCK_THREAD_CPUTIME_ID = 3 on Linux; finer than
+/// /proc/thread-self/schedstat, which only advances at scheduler ticks).
+fn cpu_seconds() -> f64 {
+    let mut t = Timespec { sec: 0, nsec: 0 };
+    // SAFETY: clock_gettime writes one timespec to a valid pointer.
+    let rc = unsafe { clock_gettime(3, &mut t) };
+    assert_eq!(rc, 0, "clock_gettime");
+    t.sec as f64 + 1e-9 * t.nsec as f64
+}
+
+/// Median CPU time of f over `reps` calls (f gets the call's index).
+fn median_cpu(reps: usize, mut f: impl FnMut(usize)) -> f64 {
+    let mut times: Vec<f64> = (0..reps)
+        .map(|i| {
+            let t = cpu_seconds();
+            f(i);
+            cpu_seconds() - t
+        })
+        .collect();
+    times.sort_by(f64::total_cmp);
+    times[times.len() / 2]
+}
 
 fn main() {
     let reps: usize = std::env::args()
@@ -23,27 +57,21 @@ fn main() {
             for mu in [0.1, 0.3, 1.0] {
                 let k = Coupling { bp, bq, mu };
                 let mut s = solve(&k, tol).expect("solve");
-                let t = Instant::now();
-                for _ in 0..reps {
-                    s = solve(&k, tol).expect("solve");
-                }
-                let per_solve = t.elapsed().as_secs_f64() / reps as f64;
+                let per_solve = median_cpu(reps, |_| s = solve(&k, tol).expect("solve"));
                 // cold: a new edge exponent g each time (mu shifted by 1e-9 relative)
-                let t = Instant::now();
-                for i in 0..reps {
+                let cold = median_cpu(reps, |i| {
                     let mu = mu * (1.0 + 1e-9 * (i + 1) as f64);
                     solve(&Coupling { bp, bq, mu }, tol).expect("solve");
-                }
-                let cold = t.elapsed().as_secs_f64() / reps as f64;
+                });
                 let npts = 200_000;
-                let t = Instant::now();
+                let t = cpu_seconds();
                 let mut acc = 0.0;
                 for i in 0..npts {
                     let x = -0.999 + 1.998 * (i as f64 + 0.5) / npts as f64;
                     let (p, q) = s.tractions(x);
                     acc += p + q;
                 }
-                let per_point = t.elapsed().as_secs_f64() / npts as f64;
+                let per_point = (cpu_seconds() - t) / npts as f64;
                 println!(
                     "tol {tol:.0e} {name:6} mu {mu:3}: c = {:.15e}, 1 - c = {:.12e}, est {:.1e}, order {:2}, {:3} unknowns, {:8.3} ms/solve ({:8.3} cold), {:3.0} ns/point (checksum {acc:.3})",
                     s.edge().c,

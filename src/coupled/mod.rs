@@ -49,7 +49,7 @@
 //! thin slip zones cost seconds (1 - c = 1e-14 at b* = 0.1: ~2000 unknowns). Between the
 //! panels' range and the bonded limit's, i.e. for b* below about 0.12 with 1 - c from about
 //! 1e-21 to 4e-18 at tolerance 1e-10 (1e-17 to 4e-18 at 1e-8), no regime answers yet.
-//! A panel solve is 6-9 cheap order-4 solves, then about two column-pivoted least-squares
+//! A panel solve is 6-9 cheap order-4 solves, then about two Householder least-squares
 //! solves per order (100-350 unknowns at the last); `cargo run --release --example
 //! coupled_timing` measures the cost.
 
@@ -65,6 +65,7 @@ pub(crate) mod tests;
 
 use crate::error::{Error, Result};
 use crate::goodman::GoodmanSolution;
+use crate::numerics::lstsq::LeastSquares;
 use crate::numerics::quadrature::gauss_legendre_nodes;
 use crate::numerics::roots::brent;
 use crate::problem::{Coupling, Profile, StickEdge, traction_parts, validate_tolerance};
@@ -294,10 +295,20 @@ struct Level<'a> {
     solved: [Option<(f64, Discrete)>; 2],
     /// Collocation points per unknown.
     oversample: f64,
+    /// The least-squares solver of this level's systems (from the lower orders: once they
+    /// needed the pivoted QR, so do the higher ones).
+    ls: LeastSquares,
 }
 
 impl<'a> Level<'a> {
-    fn new(k: Constants, order: usize, fams: &'a Families, xtol: f64, oversample: f64) -> Self {
+    fn new(
+        k: Constants,
+        order: usize,
+        fams: &'a Families,
+        xtol: f64,
+        oversample: f64,
+        ls: LeastSquares,
+    ) -> Self {
         Level {
             k,
             order,
@@ -307,6 +318,7 @@ impl<'a> Level<'a> {
             xtol,
             solved: [None, None],
             oversample,
+            ls,
         }
     }
 
@@ -326,7 +338,16 @@ impl<'a> Level<'a> {
                 &own
             }
         };
-        let d = solve_fixed(self.k, c, w, order, self.fams, layout, self.oversample)?;
+        let d = solve_fixed(
+            self.k,
+            c,
+            w,
+            order,
+            self.fams,
+            layout,
+            self.oversample,
+            &mut self.ls,
+        )?;
         let defect = d.defect;
         self.evals.push((lc, defect));
         self.solved = [self.solved[1].take(), Some((lc, d))];
@@ -927,7 +948,7 @@ fn panels_from(
 fn first_root(consts: Constants, start: Start, oversample: f64) -> Result<Root> {
     let n = start.order();
     let fams = Families::new(consts.g, n);
-    let mut level = Level::new(consts, n, &fams, SCAN_XTOL, oversample);
+    let mut level = Level::new(consts, n, &fams, SCAN_XTOL, oversample, Default::default());
     let lc = level.root_from(start)?;
     Ok(Root {
         lc,
@@ -935,18 +956,20 @@ fn first_root(consts: Constants, start: Start, oversample: f64) -> Result<Root> 
         slope: level.slope(lc),
         step: 1.0,
         discrete: level.discrete_at(lc)?,
+        ls: level.ls,
     })
 }
 
 /// One order's root: lc = ln(c / (1 - c)), its distance from the order's exact root (unc),
-/// the slope of the defect there, the step from the previous order's root and the
-/// discretisation at lc.
+/// the slope of the defect there, the step from the previous order's root, the
+/// discretisation at lc and the least-squares solver's state (passed on to the next order).
 struct Root {
     lc: f64,
     unc: f64,
     slope: f64,
     step: f64,
     discrete: Discrete,
+    ls: LeastSquares,
 }
 
 /// The root at order n, started from the previous order's root and slope; if that fails
@@ -971,11 +994,11 @@ fn root_at_order(
         .min(0.05 * traction_tol / per_lc)
         .clamp(1e-13, 1e-3);
     let fams = Families::new(consts.g, n);
-    let mut level = Level::new(consts, n, &fams, xtol, oversample);
+    let mut level = Level::new(consts, n, &fams, xtol, oversample, prev.ls);
     let (lc, unc) = match level.root_near(prev.lc, prev.slope, prev.step) {
         Ok(r) => r,
         Err(_) => {
-            level = Level::new(consts, n, &fams, xtol, oversample);
+            level = Level::new(consts, n, &fams, xtol, oversample, level.ls);
             (level.root_from(start)?, xtol)
         }
     };
@@ -990,6 +1013,7 @@ fn root_at_order(
         slope,
         step: (lc - prev.lc).abs(),
         discrete,
+        ls: level.ls,
     })
 }
 

@@ -12,11 +12,10 @@
 use super::mesh::{Basis, Block, Layout, Mesh, Panel, Pt};
 use crate::error::{Error, Result};
 use crate::numerics::cauchy::WeightedFamily;
+use crate::numerics::lstsq::LeastSquares;
 use crate::numerics::orthopoly::{legendre, legendre_sum};
 use crate::numerics::quadrature::gauss_legendre_nodes;
 use crate::numerics::special::{exprel, sin_pi};
-use faer::Mat;
-use faer::linalg::solvers::SolveLstsq;
 use std::f64::consts::PI;
 
 /// Collocation points per unknown: the oversampled system is solved in the least-squares
@@ -254,7 +253,8 @@ impl WrongCFold {
 }
 
 /// Assembles and solves the system for stick edge (c, w = 1 - c) at order n, with
-/// `oversample` collocation points per unknown.
+/// `oversample` collocation points per unknown, by `ls`.
+#[allow(clippy::too_many_arguments)]
 pub(crate) fn solve_fixed(
     k: Constants,
     c: f64,
@@ -263,6 +263,7 @@ pub(crate) fn solve_fixed(
     fams: &Families,
     layout: &Layout,
     oversample: f64,
+    ls: &mut LeastSquares,
 ) -> Result<Discrete> {
     if !(c > 1e-300 && w > 1e-300 && c <= 1.0 && w <= 1.0) {
         return Err(Error::NoConvergence(format!(
@@ -292,9 +293,10 @@ pub(crate) fn solve_fixed(
     }
     let fold = WrongCFold::new(&mesh, k);
     let columns = unknowns - usize::from(fold.is_some());
-    let mut a = Mat::<f64>::zeros(nr, columns);
+    // row-major; each row assembled in `r` (all unknowns), then folded into its place
+    let mut a = vec![0.0; nr * columns];
     let mut r = vec![0.0; unknowns];
-    for (i, row) in rows.iter().enumerate() {
+    for (row, out) in rows.iter().zip(a.chunks_exact_mut(columns)) {
         r.fill(0.0);
         let own = &mesh.panels[row.panel];
         for src in &mesh.panels {
@@ -332,7 +334,7 @@ pub(crate) fn solve_fixed(
         let scale = 1.0 / r.iter().fold(0.0f64, |m, v| m.max(v.abs())).max(1e-300);
         for (j, v) in r.iter().enumerate() {
             if let Some(col) = WrongCFold::column(fold, j) {
-                a[(i, col)] = *v * scale;
+                out[col] = *v * scale;
             }
         }
     }
@@ -362,14 +364,14 @@ pub(crate) fn solve_fixed(
     folded.iter_mut().zip(&col_scale).for_each(|(v, s)| *v *= s);
     for (j, v) in folded.iter().enumerate() {
         if let Some(col) = WrongCFold::column(fold, j) {
-            a[(last, col)] = v * nscale;
+            a[last * columns + col] = v * nscale;
         }
     }
-    let mut rhs = Mat::<f64>::zeros(nr, 1);
-    rhs[(last, 0)] = nscale;
-    let x = a.col_piv_qr().solve_lstsq(&rhs);
+    let mut rhs = vec![0.0; nr];
+    rhs[last] = nscale;
+    let x = ls.solve(&a, columns, &rhs);
     let mut coef: Vec<f64> = (0..unknowns)
-        .map(|j| WrongCFold::column(fold, j).map_or(0.0, |col| x[(col, 0)] * col_scale[j]))
+        .map(|j| WrongCFold::column(fold, j).map_or(0.0, |col| x[col] * col_scale[j]))
         .collect();
     if let Some(f) = fold {
         coef[f.p] = f.ratio * coef[f.q];

@@ -306,14 +306,24 @@ fn c_at_order(k: Constants, n: usize) -> f64 {
 /// The discretisation at the root of defect at a fixed order n.
 fn discrete_at_order(k: Constants, n: usize) -> Discrete {
     let fams = Families::new(k.g, n);
-    let mut level = Level::new(k, n, &fams, 0.0, system::OVERSAMPLE);
+    let mut level = Level::new(k, n, &fams, 0.0, system::OVERSAMPLE, Default::default());
     let (c, w) = edge_of(
         level
             .first_root(goodman_guess(k.bq, k.mu), SCAN_ORDERS[0].min(n))
             .unwrap(),
     );
     let layout = level.layout.unwrap();
-    solve_fixed(k, c, w, n, &fams, &layout, system::OVERSAMPLE).unwrap()
+    solve_fixed(
+        k,
+        c,
+        w,
+        n,
+        &fams,
+        &layout,
+        system::OVERSAMPLE,
+        &mut Default::default(),
+    )
+    .unwrap()
 }
 
 /// Geometric convergence in the order, and the error estimate bounds the true error.
