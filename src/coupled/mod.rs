@@ -661,7 +661,7 @@ pub fn solve(k: &Coupling, tol: f64) -> Result<CoupledSolution> {
     if let Some(s) = limit_regime(k, tol, tol) {
         return Ok(s);
     }
-    let s = beyond_limits(k, tol, f64::INFINITY)?;
+    let s = panel_regimes(k, tol, f64::INFINITY)?;
     if s.error > tol {
         return Err(not_met(s.error, tol, &s));
     }
@@ -709,7 +709,7 @@ pub fn solve_to(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSolu
     let asked = tol_asked;
     loop {
         // the panels' own tolerance may be missed as long as what was asked for is met
-        let s = beyond_limits(k, tol, traction_tol)?;
+        let s = panel_regimes(k, tol, traction_tol)?;
         let e = s.traction_error();
         if s.error <= asked && e <= traction_tol {
             return Ok(s);
@@ -755,7 +755,7 @@ fn limit_regime(k: &Coupling, tol: f64, traction_tol: f64) -> Option<CoupledSolu
 
 /// The panels ([`panels`]), or beyond [`MU_EXTRAPOLATE`] their extrapolation in 1/mu~
 /// ([`large_friction`]).
-fn beyond_limits(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSolution> {
+fn panel_regimes(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSolution> {
     if k.bp > 0.0 && k.reduced().0.mu >= MU_EXTRAPOLATE {
         let l = LargeFriction::new(k, tol, traction_tol)?;
         let order = l.order();

@@ -317,4 +317,26 @@ mod tests {
             }
         }
     }
+
+    /// Thin slip zones at moderate friction, 1 - c ~ 5e-17 (b* = 0.12, mu~ = 464): the panels
+    /// find the root inside the law's window (scaling the slip panels' unknowns to q = mu p
+    /// at this friction lost the defect's sign change there), and the root lies where the
+    /// law puts it.
+    #[test]
+    fn panels_find_thin_slip_zones_in_the_window() {
+        let (b, m) = (0.12, 464.158_883_361_277_3);
+        let k = Coupling {
+            bp: b,
+            bq: b,
+            mu: m,
+        };
+        let s = crate::coupled::panels(&k, 1e-10, f64::INFINITY).unwrap();
+        let w = s.edge().one_minus_c;
+        let (lo, hi) = ln_w_range(b, m).unwrap();
+        assert!(
+            lo < w.ln() && w.ln() < hi,
+            "ln w {} outside ({lo}, {hi})",
+            w.ln()
+        );
+    }
 }
