@@ -87,6 +87,10 @@ impl Roots {
     }
 }
 
+/// Depth of the point standing in for the surface (y = 0) in [`Field::stresses`]: far
+/// below every panel's resolution, so that its transforms are the limits from inside.
+const SURFACE_DEPTH: f64 = 1e-300;
+
 /// The field of one solution (built lazily by [`crate::Solution`], shared by its threads).
 #[derive(Clone, Debug)]
 pub(crate) struct Field {
@@ -144,11 +148,15 @@ impl Field {
         let r = &self.roots;
         let zero = C64::new(0.0, 0.0);
         let (mp, mq, dp, dq) = if y == 0.0 {
-            // the limit from inside: both points at x - i0, d_f = 0
+            // the limit from inside: both points at x - i0, d_f = 0, as a point SURFACE_DEPTH
+            // below the axis, so that every panel sees it on the same side (at x - i0
+            // exactly at a panel end, the end's own substitute point and the other panels'
+            // signed zeros disagreed: sxx at the end of the carbon ply's punch-edge panel,
+            // mu = 0.3, came out -1.448 instead of -1.126)
             let [t] = self.kernel.transforms(
                 [Point {
                     x,
-                    w: C64::new(0.0, -0.0),
+                    w: C64::new(0.0, -SURFACE_DEPTH),
                 }],
                 false,
             );
