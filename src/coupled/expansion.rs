@@ -9,50 +9,27 @@
 
 use super::mesh::{self, Pt};
 use super::{CoupledSolution, Discrete, Regime};
-use crate::field::{
-    Expand, Expansion, Exponents, Family, Panel, fit, fitted_panel, graded, sample,
-};
+use crate::field::{Expand, Expansion, Exponents, Family, Panel, fit, graded_plain, sample};
 use crate::numerics::cauchy::Weight;
 
-/// The innermost of the graded panels at c that stand for a log-weighted panel, relative
-/// to that panel's width: within it the tractions' ln|x - c| is fitted by a polynomial (an
-/// error confined to points within 1e-6 of the width from c). Not narrower: the field's
-/// panels are given by their ends' x, and a panel a few ulps of x wide has no geometry
-/// (at 3e-14 of the width the slip next to c came out with the wrong sign).
-const LOG_INNER: f64 = 1.0 / (1u64 << 20) as f64;
-
-/// A panel at c whose basis holds a log weight, as plain panels graded towards c (ratio 2,
-/// each at least its own width from c, so each fit converges like 5.8^(-n)): the field takes
-/// Jacobi weights, and the log weight split into its parts (1 -+ t)^g / g and -1 / g left
-/// the near-field transforms' own rounding multiplied by 1 / g (at b* = 0.7, mu~ = 1e6,
-/// g = 4.5e-7, the slip came out wrong in sign inside that panel).
+/// A panel at c whose basis holds a log weight, as plain panels graded towards c
+/// ([`graded_plain`]): the field takes Jacobi weights, and the log weight split into its
+/// parts (1 -+ t)^g / g and -1 / g left the near-field transforms' own rounding multiplied by
+/// 1 / g (at b* = 0.7, mu~ = 1e6, g = 4.5e-7, the slip came out wrong in sign inside that
+/// panel). The ends are the mesh's own points (Pt::from_edge), so that they meet its other
+/// panels exactly.
 fn graded_at_c(d: &Discrete, panel: &mesh::Panel, delta: f64) -> Vec<Panel> {
     let (c, w) = (d.mesh.c, d.mesh.w);
-    let width = 2.0 * panel.h;
-    let mut ends = vec![0.0];
-    ends.extend(graded(LOG_INNER * width, width));
-    ends.push(width);
-    ends.windows(2)
-        .map(|e| {
-            // signed distances from c of the subpanel's ends
-            let (s0, s1) = if panel.stick {
-                (-e[1], -e[0])
-            } else {
-                (e[0], e[1])
-            };
-            let (a, b) = (Pt::from_edge(c, w, s0), Pt::from_edge(c, w, s1));
-            let h = 0.5 * (s1 - s0);
-            fitted_panel(a.x, b.x, Weight::One, |omt, opt| {
-                let s = if opt <= omt {
-                    s0 + h * opt
-                } else {
-                    s1 - h * omt
-                };
-                let (p, q) = d.eval(Pt::from_edge(c, w, s));
-                (p, delta * q)
-            })
-        })
-        .collect()
+    let at = |s: f64| Pt::from_edge(c, w, s);
+    let span = if panel.stick { -2.0 } else { 2.0 } * panel.h;
+    graded_plain(
+        span,
+        |s| at(s).x,
+        |s| {
+            let (p, q) = d.eval(at(s));
+            (p, delta * q)
+        },
+    )
 }
 
 /// Adds `coef` (times `scale`) to the p or q series of the family with `weight`.

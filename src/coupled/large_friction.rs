@@ -13,7 +13,7 @@
 
 use super::{CoupledSolution, panels};
 use crate::error::Result;
-use crate::field::{Expand, Expansion, fitted_panel, graded};
+use crate::field::{Expand, Expansion, fitted_panel, graded_plain};
 use crate::numerics::cauchy::Weight;
 use crate::problem::{Coupling, Profile, StickEdge, traction_parts};
 
@@ -180,48 +180,27 @@ impl LargeFriction {
 }
 
 impl Expand for LargeFriction {
-    /// Plain panels fitted to p and q, graded towards c from both sides down to
-    /// [`INNERMOST`] of the panels at c (p and q are nearly logarithmic next to c, as
-    /// g ~ 1e-8, with O(1) coefficients: the error of the innermost fits stays next to c),
-    /// and a last panel [(1 + c) / 2, 1] weighted (1 - t)^(-g). Not the sampling of the
+    /// Plain panels fitted to p and q, graded towards c from both sides ([`graded_plain`]: p
+    /// and q are nearly logarithmic next to c, as g ~ 1e-8, with O(1) coefficients), and a
+    /// last panel [(1 + c) / 2, 1] weighted (1 - t)^(-g). Not the sampling of the
     /// approximations ([`crate::field::sample`]), which writes q = mu p + R on the stick
     /// panel at c: with mu ~ 1e12 the difference q - mu p lost everything.
     fn expansion(&self) -> Expansion {
         let (c, w) = (self.edge.c, self.edge.one_minus_c);
+        let x_of = |s: f64| c + s;
+        let at = |s: f64| self.half_line_tractions(c + s);
+        let mut panels = graded_plain(-c, x_of, at);
+        panels.extend(graded_plain(0.5 * w, x_of, at));
         let g = self.coupling.edge_exponent();
-        let half = 0.5 * c.min(w);
-        // [a, b] given as signed distances from c
-        let panel = |s0: f64, s1: f64, weight: Weight| {
-            let h = 0.5 * (s1 - s0);
-            fitted_panel(c + s0, c + s1, weight, |omt, opt| {
-                let s = if opt <= omt {
-                    s0 + h * opt
-                } else {
-                    s1 - h * omt
-                };
-                self.half_line_tractions(c + s)
-            })
-        };
-        let stick = graded(INNERMOST * half, c);
-        let slip = graded(INNERMOST * half, 0.5 * w);
-        let mut panels = vec![panel(-c, -stick[stick.len() - 1], Weight::One)];
-        for d in stick.windows(2).rev() {
-            panels.push(panel(-d[1], -d[0], Weight::One));
-        }
-        panels.push(panel(-stick[0], 0.0, Weight::One));
-        panels.push(panel(0.0, slip[0], Weight::One));
-        for d in slip.windows(2) {
-            panels.push(panel(d[0], d[1], Weight::One));
-        }
-        panels.push(panel(slip[slip.len() - 1], 0.5 * w, Weight::One));
-        panels.push(panel(0.5 * w, w, Weight::Right(-g)));
+        panels.push(fitted_panel(
+            c + 0.5 * w,
+            1.0,
+            Weight::Right(-g),
+            |omt, _| self.half_line_tractions(1.0 - 0.25 * w * omt),
+        ));
         Expansion { panels }
     }
 }
-
-/// The innermost panels of the expansion at c, relative to the panels at c (as for the
-/// panels' own log-weighted panels, `coupled::expansion`).
-const INNERMOST: f64 = 1.0 / (1u64 << 20) as f64;
 
 #[cfg(test)]
 mod tests {

@@ -233,22 +233,75 @@ impl WrongCFold {
         let ratio = -k.bp * sin_pi(k.g) * (hq / hp).powf(1.0 - k.g);
         Some(Self { q, p, ratio })
     }
+}
+
+/// From the mesh's unknowns to the system's columns and back: the wrong-c modes folded into
+/// one ([`WrongCFold`]) and, at large friction (g below [`LOG_BELOW`]), the slip panels'
+/// unknowns scaled to q = mu p (O(1) where p is O(1 / mu)), so that no row's largest entry
+/// is one whose term is mu times smaller (a row scaled by it lost eps mu ~ eps / g relative
+/// in (E1) on the slip zones). Not at moderate friction: there the scaling cost the thin slip
+/// zones of b* = 0.12, mu~ = 215-2154 (1 - c ~ 5e-17) the defect's sign change in the
+/// near-bonded window.
+struct Columns {
+    fold: Option<WrongCFold>,
+    /// Scale of each unknown's column.
+    scale: Vec<f64>,
+}
+
+impl Columns {
+    fn new(mesh: &Mesh, k: Constants) -> Self {
+        let slip_scale = if k.g < LOG_BELOW { 1.0 / k.mu } else { 1.0 };
+        let mut scale = vec![1.0; mesh.unknowns];
+        for panel in mesh.panels.iter().filter(|p| !p.stick) {
+            scale[panel.p_offset..panel.p_offset + panel.np()].fill(slip_scale);
+        }
+        Columns {
+            fold: WrongCFold::new(mesh, k),
+            scale,
+        }
+    }
+
+    /// Number of the system's columns.
+    fn count(&self) -> usize {
+        self.scale.len() - usize::from(self.fold.is_some())
+    }
 
     /// The system's column of unknown j (None for the folded one).
-    fn column(fold: Option<Self>, j: usize) -> Option<usize> {
-        match fold {
+    fn column(&self, j: usize) -> Option<usize> {
+        match self.fold {
             Some(f) if j == f.p => None,
             Some(f) if j > f.p => Some(j - 1),
             _ => Some(j),
         }
     }
 
-    /// Folds p's entry of a row into q's.
-    fn apply(fold: Option<Self>, r: &mut [f64]) {
-        if let Some(f) = fold {
+    /// A row over the unknowns, folded and scaled in place.
+    fn transform(&self, r: &mut [f64]) {
+        if let Some(f) = self.fold {
             r[f.q] += f.ratio * r[f.p];
             r[f.p] = 0.0;
         }
+        r.iter_mut().zip(&self.scale).for_each(|(v, s)| *v *= s);
+    }
+
+    /// Writes the transformed row `r`, times `factor`, into the system's row `out`.
+    fn place(&self, r: &[f64], factor: f64, out: &mut [f64]) {
+        for (j, v) in r.iter().enumerate() {
+            if let Some(col) = self.column(j) {
+                out[col] = v * factor;
+            }
+        }
+    }
+
+    /// The unknowns from the system's solution x.
+    fn unknowns(&self, x: &[f64]) -> Vec<f64> {
+        let mut coef: Vec<f64> = (0..self.scale.len())
+            .map(|j| self.column(j).map_or(0.0, |col| x[col] * self.scale[j]))
+            .collect();
+        if let Some(f) = self.fold {
+            coef[f.p] = f.ratio * coef[f.q];
+        }
+        coef
     }
 }
 
@@ -283,18 +336,8 @@ pub(crate) fn solve_fixed(
         vec![0.0; deg],
         vec![0.0; deg],
     );
-    // large friction (g below LOG_BELOW): unknowns on the slip panels q = mu p (O(1) where
-    // p is O(1 / mu)), so that no row's largest entry is one whose term is mu times smaller
-    // (a row scaled by it lost eps mu ~ eps / g relative in (E1) on the slip zones). Not at
-    // moderate friction: there it cost the thin slip zones of b* = 0.12, mu~ = 215-2154
-    // (1 - c ~ 5e-17) the defect's sign change in the near-bonded window
-    let slip_scale = if k.g < LOG_BELOW { 1.0 / k.mu } else { 1.0 };
-    let mut col_scale = vec![1.0; unknowns];
-    for panel in mesh.panels.iter().filter(|p| !p.stick) {
-        col_scale[panel.p_offset..panel.p_offset + panel.np()].fill(slip_scale);
-    }
-    let fold = WrongCFold::new(&mesh, k);
-    let columns = unknowns - usize::from(fold.is_some());
+    let map = Columns::new(&mesh, k);
+    let columns = map.count();
     // row-major; each row assembled in `r` (all unknowns), then folded into its place
     let mut a = vec![0.0; nr * columns];
     let mut r = vec![0.0; unknowns];
@@ -331,14 +374,9 @@ pub(crate) fn solve_fixed(
                 col += 1;
             }
         }
-        WrongCFold::apply(fold, &mut r);
-        r.iter_mut().zip(&col_scale).for_each(|(v, s)| *v *= s);
+        map.transform(&mut r);
         let scale = 1.0 / r.iter().fold(0.0f64, |m, v| m.max(v.abs())).max(1e-300);
-        for (j, v) in r.iter().enumerate() {
-            if let Some(col) = WrongCFold::column(fold, j) {
-                out[col] = *v * scale;
-            }
-        }
+        map.place(&r, scale, out);
     }
     // (E4): int_{-1}^{1} p = 1 (weighted row; the solution is rescaled to it exactly below)
     let last = nr - 1;
@@ -362,22 +400,11 @@ pub(crate) fn solve_fixed(
     const NORM_WEIGHT: f64 = 1e3;
     let nscale = NORM_WEIGHT / norm.iter().fold(0.0f64, |m, v| m.max(v.abs()));
     let mut folded = norm.clone();
-    WrongCFold::apply(fold, &mut folded);
-    folded.iter_mut().zip(&col_scale).for_each(|(v, s)| *v *= s);
-    for (j, v) in folded.iter().enumerate() {
-        if let Some(col) = WrongCFold::column(fold, j) {
-            a[last * columns + col] = v * nscale;
-        }
-    }
+    map.transform(&mut folded);
+    map.place(&folded, nscale, &mut a[last * columns..]);
     let mut rhs = vec![0.0; nr];
     rhs[last] = nscale;
-    let x = ls.solve(&a, columns, &rhs);
-    let mut coef: Vec<f64> = (0..unknowns)
-        .map(|j| WrongCFold::column(fold, j).map_or(0.0, |col| x[col] * col_scale[j]))
-        .collect();
-    if let Some(f) = fold {
-        coef[f.p] = f.ratio * coef[f.q];
-    }
+    let mut coef = map.unknowns(&ls.solve(&a, columns, &rhs));
     let mass: f64 = coef.iter().zip(&norm).map(|(c, v)| c * v).sum();
     for v in coef.iter_mut() {
         *v /= mass;

@@ -122,7 +122,7 @@ const TAIL: f64 = 1e-15;
 /// Distances from a singular point of the break points of panels graded towards it, up to
 /// `limit` (exclusive): h, 2h, 4h, ..., each panel at least its own width from the singular
 /// point; the panel left over, [last, limit], is at most twice as wide as its distance.
-pub(crate) fn graded(h: f64, limit: f64) -> Vec<f64> {
+fn graded(h: f64, limit: f64) -> Vec<f64> {
     let mut d = vec![h];
     while let Some(&last) = d.last() {
         if limit <= 3.0 * last {
@@ -131,6 +131,46 @@ pub(crate) fn graded(h: f64, limit: f64) -> Vec<f64> {
         d.push(2.0 * last);
     }
     d
+}
+
+/// The innermost of [`graded_plain`]'s panels, relative to their span: within it a logarithm
+/// at the singular point is fitted by a polynomial (an error confined to points within 1e-6
+/// of the span from it). Not narrower: the field's panels are given by their ends' x, and a
+/// panel a few ulps of x wide has no geometry (at 3e-14 of the span the slip next to c came
+/// out with the wrong sign, COUPLED at b* = 0.7, mu~ = 1e6).
+const INNERMOST: f64 = 1.0 / (1u64 << 20) as f64;
+
+/// Plain panels (p and q fitted) over the signed distances s from a singular point between 0
+/// and `span` (< 0: to its left), graded towards it ([`graded`], down to [`INNERMOST`] of the
+/// span): for tractions with O(1) logarithms there, which no Jacobi weight carries. `x_of(s)`
+/// gives the panel ends, `tractions(s)` the values, s taken from the nearer end of each
+/// panel so that it keeps its accuracy next to the singular point.
+pub(crate) fn graded_plain(
+    span: f64,
+    x_of: impl Fn(f64) -> f64,
+    tractions: impl Fn(f64) -> (f64, f64),
+) -> Vec<Panel> {
+    let width = span.abs();
+    let mut ends = vec![0.0];
+    ends.extend(graded(INNERMOST * width, width));
+    ends.push(width);
+    ends.windows(2)
+        .map(|e| {
+            let (s0, s1) = if span < 0.0 {
+                (-e[1], -e[0])
+            } else {
+                (e[0], e[1])
+            };
+            let h = 0.5 * (s1 - s0);
+            fitted_panel(x_of(s0), x_of(s1), Weight::One, |omt, opt| {
+                tractions(if opt <= omt {
+                    s0 + h * opt
+                } else {
+                    s1 - h * omt
+                })
+            })
+        })
+        .collect()
 }
 
 /// Legendre coefficients of f(t) on [-1, 1] from its values at Gauss-Legendre nodes (exact
