@@ -22,6 +22,7 @@ pub mod error;
 pub mod material;
 pub mod model_error;
 pub mod problem;
+pub mod stick_edge_table;
 
 // The numerical tools the methods share.
 pub(crate) mod numerics;

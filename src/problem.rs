@@ -100,6 +100,14 @@ impl StickEdge {
         }
     }
 
+    /// From lc = ln(c / (1 - c)): c and 1 - c both to full relative accuracy.
+    pub fn from_logit(lc: f64) -> Self {
+        Self {
+            c: 1.0 / (1.0 + (-lc).exp()),
+            one_minus_c: 1.0 / (1.0 + lc.exp()),
+        }
+    }
+
     /// |c - other.c|, from the slip widths when both edges lie above 1/2 (no cancellation
     /// near full stick), else from c.
     pub fn distance(&self, other: StickEdge) -> f64 {

@@ -120,7 +120,7 @@ impl Expand for CoupledSolution {
     fn expansion(&self) -> Expansion {
         match &self.regime {
             Regime::Panels(d) => from_discrete(d, self.delta),
-            Regime::Uncoupled(g) => g.expansion(),
+            Regime::Uncoupled(g) | Regime::Tabulated(g) => g.expansion(),
             Regime::FullSlip(f) => f.expansion(),
             Regime::NearBonded(b) => b.expansion(),
             Regime::LargeFriction(l) => l.expansion(),

@@ -61,23 +61,53 @@ fn lagrange(y: f64, nodes: [Option<f64>; 3]) -> [f64; 3] {
     w
 }
 
+/// The frictions whose stick edges are extrapolated: M, 2 M, 4 M.
+pub(crate) const FRICTIONS: [f64; 3] = [M, 2.0 * M, 4.0 * M];
+
+/// The stick edge at reduced friction `mu` extrapolated from the `edges` at [`FRICTIONS`]
+/// (their errors `errors`): the edge, its error (the errors times the weights' magnitudes,
+/// plus the distance from the line through 2 M and 4 M) and the Lagrange weights of the
+/// quadratic and of the line.
+pub(crate) fn extrapolate_edge(
+    mu: f64,
+    edges: [StickEdge; 3],
+    errors: [f64; 3],
+) -> (StickEdge, f64, [[f64; 3]; 2]) {
+    let y = FRICTIONS.map(|m| Some(1.0 / m));
+    let quad = lagrange(1.0 / mu, y);
+    let line = lagrange(1.0 / mu, [None, y[1], y[2]]);
+    let combine = |weights: [f64; 3], f: fn(&StickEdge) -> f64| -> f64 {
+        weights.iter().zip(&edges).map(|(w, e)| w * f(e)).sum()
+    };
+    let (c, w) = (combine(quad, |e| e.c), combine(quad, |e| e.one_minus_c));
+    let (edge, model) = if c < 0.5 {
+        (StickEdge::from_c(c), (c - combine(line, |e| e.c)).abs())
+    } else {
+        let line_w = combine(line, |e| e.one_minus_c);
+        (StickEdge::from_one_minus_c(w), (w - line_w).abs())
+    };
+    let own: f64 = quad.iter().zip(errors).map(|(q, e)| q.abs() * e).sum();
+    (edge, own + model, [quad, line])
+}
+
 impl LargeFriction {
     /// The extrapolated solution of `k` (bp > 0, mu~ >= [`MU_EXTRAPOLATE`]) to tolerances
     /// `tol` on c and `traction_tol` on the tractions (what the panels reach is reported in
     /// the estimates; the caller compares).
     pub(crate) fn new(k: &Coupling, tol: f64, traction_tol: f64) -> Result<Self> {
         let (r, delta) = k.reduced();
-        let frictions = [M, 2.0 * M, 4.0 * M];
-        let sols = frictions
+        let sols = FRICTIONS
             .iter()
             .map(|&mu| {
                 let at = Coupling { mu, ..r };
                 panels(&at, SHARE * tol, SHARE * traction_tol / delta.max(1.0))
             })
             .collect::<Result<Vec<_>>>()?;
-        let y = frictions.map(|m| Some(1.0 / m));
-        let quad = lagrange(1.0 / r.mu, y);
-        let line = lagrange(1.0 / r.mu, [None, y[1], y[2]]);
+        let (edge, error, [quad, line]) = extrapolate_edge(
+            r.mu,
+            [0, 1, 2].map(|i| sols[i].edge),
+            [0, 1, 2].map(|i| sols[i].error),
+        );
         let combine = |weights: [f64; 3], f: &dyn Fn(&CoupledSolution) -> f64| {
             weights
                 .iter()
@@ -85,21 +115,6 @@ impl LargeFriction {
                 .map(|(w, s)| w * f(s))
                 .sum::<f64>()
         };
-        let (c, w) = (
-            combine(quad, &|s| s.edge.c),
-            combine(quad, &|s| s.edge.one_minus_c),
-        );
-        let edge = if c < 0.5 {
-            StickEdge::from_c(c)
-        } else {
-            StickEdge::from_one_minus_c(w)
-        };
-        let model = if c < 0.5 {
-            (c - combine(line, &|s| s.edge.c)).abs()
-        } else {
-            (w - combine(line, &|s| s.edge.one_minus_c)).abs()
-        };
-        let own: f64 = combine(quad.map(f64::abs), &|s| s.error);
         let own_tractions = combine(quad.map(f64::abs), &|s| s.traction_error);
         let line_edge = combine(line, &|s| s.edge.c);
         let mut s = LargeFriction {
@@ -110,7 +125,7 @@ impl LargeFriction {
             quad,
             line,
             edge,
-            error: own + model,
+            error,
             traction_error: 0.0,
         };
         let (dp, dq) = traction_parts(

@@ -42,7 +42,10 @@
 //! - slip zones below the tolerance (small b*): the bonded punch with the law
 //!   ln((1 - c) / 8) = -kappa arctan(mu~) / eps ([`near_bonded`]);
 //! - mu~ >= 1e7, beyond the panels' reach: the quadratic in 1/mu~ through the panels'
-//!   solutions at mu~ = 1e6, 2e6, 4e6 ([`large_friction`]).
+//!   solutions at mu~ = 1e6, 2e6, 4e6 ([`large_friction`]);
+//! - c alone (traction tolerance +infinity, [`solve_to`]): the tabulated stick edge
+//!   ([`crate::stick_edge_table`]) where its bound meets the tolerance, with Goodman's
+//!   tractions and their model-error bound.
 //!
 //! Range of the panels: `T_MIN` < lc < `T_MAX`, i.e. c > 2e-35 and 1 - c > 4e-18 (outside
 //! it NoConvergence says so); the number of panels grows like log(1 / min(c, 1 - c)), and
@@ -65,6 +68,7 @@ pub(crate) mod tests;
 
 use crate::error::{Error, Result};
 use crate::goodman::GoodmanSolution;
+use crate::model_error::Approximation;
 use crate::numerics::lstsq::LeastSquares;
 use crate::numerics::quadrature::gauss_legendre_nodes;
 use crate::numerics::roots::brent;
@@ -159,6 +163,12 @@ const RELATIVE_C: f64 = 1e-7;
 /// Factor on the difference of two successive orders' c in the error estimate.
 const ORDER_SAFETY: f64 = 2.0;
 
+/// The order at which [`panels_at_table_edge`] measures how the tractions move with c, and
+/// the step in lc = ln(c / (1 - c)) it takes (far above the tractions' rounding at that order,
+/// small enough to be linear).
+const SENSITIVITY_ORDER: usize = 8;
+const SENSITIVITY_STEP: f64 = 1e-6;
+
 /// Tolerances below which the finer oversampling is used (defect's noise at the default one
 /// is 1e-12 .. 1e-13 in c at orders 10-26).
 const FINE_BELOW: f64 = 1e-11;
@@ -203,6 +213,9 @@ enum Regime {
     NearBonded(NearBonded),
     /// mu~ beyond the panels' reach: extrapolated in 1/mu~ ([`large_friction`]).
     LargeFriction(Box<LargeFriction>),
+    /// c alone (no traction tolerance): the tabulated stick edge
+    /// ([`crate::stick_edge_table`]); the tractions are Goodman's, with his traction bound.
+    Tabulated(GoodmanSolution),
 }
 
 impl CoupledSolution {
@@ -264,13 +277,15 @@ impl Profile for CoupledSolution {
             Regime::FullSlip(f) => f.half_line_tractions(x),
             Regime::NearBonded(b) => b.half_line_tractions(x),
             Regime::LargeFriction(l) => l.half_line_tractions(x),
+            Regime::Tabulated(g) => g.half_line_tractions(x),
         }
     }
 }
 
 /// c and 1 - c from lc = ln(c / (1 - c)), both to full relative accuracy.
 fn edge_of(lc: f64) -> (f64, f64) {
-    (1.0 / (1.0 + (-lc).exp()), 1.0 / (1.0 + lc.exp()))
+    let e = StickEdge::from_logit(lc);
+    (e.c, e.one_minus_c)
 }
 
 /// Goodman's stick edge (the closed form of [`crate::goodman::stick_edge`]) as a starting
@@ -698,6 +713,11 @@ pub fn solve_to(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSolu
     if let Some(s) = limit_regime(k, tol, traction_tol) {
         return Ok(s);
     }
+    if traction_tol == f64::INFINITY
+        && let Some(s) = tabulated(k, tol)
+    {
+        return Ok(s);
+    }
     let tol_asked = tol;
     let mut tol = tol.min((traction_tol / TRACTION_PER_C).max(TIGHTEST));
     if traction_tol.is_finite() {
@@ -707,6 +727,9 @@ pub fn solve_to(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSolu
         tol = tol.min(RELATIVE_C * FullSlip::new(k).numerical_error());
     }
     let asked = tol_asked;
+    if let Some(s) = panels_at_table_edge(k, tol_asked, traction_tol) {
+        return Ok(s);
+    }
     loop {
         // the panels' own tolerance may be missed as long as what was asked for is met
         let s = panel_regimes(k, tol, traction_tol)?;
@@ -751,6 +774,125 @@ fn limit_regime(k: &Coupling, tol: f64, traction_tol: f64) -> Option<CoupledSolu
     }
     let nb = NearBonded::new(k);
     (nb.covered() && meets(&nb)).then(|| CoupledSolution::from_profile(nb, Regime::NearBonded))
+}
+
+/// The tabulated stick edge ([`crate::stick_edge_table`]) and its bound (from
+/// [`MU_EXTRAPOLATE`] on, extrapolated in 1/mu~ from the table as [`large_friction`] does from
+/// the panels), where the table covers the coupling.
+fn table_edge(k: &Coupling) -> Option<(StickEdge, f64)> {
+    let (r, _) = k.reduced();
+    let at = |mu: f64| {
+        crate::stick_edge_table::lookup(r.bp, mu)
+            .map(|(lc, bound)| (StickEdge::from_logit(lc), bound))
+    };
+    if r.mu >= MU_EXTRAPOLATE {
+        let [e0, e1, e2] = large_friction::FRICTIONS.map(at);
+        let (e0, e1, e2) = (e0?, e1?, e2?);
+        let (edge, error, _) =
+            large_friction::extrapolate_edge(r.mu, [e0.0, e1.0, e2.0], [e0.1, e1.1, e2.1]);
+        Some((edge, error))
+    } else {
+        at(r.mu)
+    }
+}
+
+/// c alone: the tabulated stick edge where its bound meets `tol`, with Goodman's tractions
+/// and their model-error bound (+infinity where the model-error table gives none: no
+/// traction tolerance was asked for).
+fn tabulated(k: &Coupling, tol: f64) -> Option<CoupledSolution> {
+    let (edge, error) = table_edge(k).filter(|&(_, error)| error <= tol)?;
+    let goodman = crate::goodman::solve(k).ok()?;
+    let traction_error =
+        crate::model_error::traction_bound(Approximation::Goodman, k).unwrap_or(f64::INFINITY);
+    Some(CoupledSolution {
+        coupling: *k,
+        edge,
+        error,
+        traction_error: traction_error + goodman.traction_error(),
+        delta: 1.0,
+        regime: Regime::Tabulated(goodman),
+        order: 0,
+    })
+}
+
+/// The panels at the tabulated stick edge, where its bound meets `tol` (below
+/// [`MU_EXTRAPOLATE`]): no root search, one solve per order ([`ORDERS`]) at that c, until the
+/// traction estimate meets `traction_tol`. The estimate is [`ORDER_SAFETY`] times the
+/// distance of the last two orders' tractions, plus the norm of the wrong-c modes they leave
+/// out (as in [`panels_from`]), plus what the table's error in c moves the tractions: at
+/// [`SENSITIVITY_ORDER`] the distance of the tractions at c and at lc + [`SENSITIVITY_STEP`],
+/// scaled to the bound (linear in it) and times ORDER_SAFETY. None where the last order
+/// misses it or the solution is inadmissible (the root search decides there).
+fn panels_at_table_edge(k: &Coupling, tol: f64, traction_tol: f64) -> Option<CoupledSolution> {
+    if k.reduced().0.mu >= MU_EXTRAPOLATE {
+        return None;
+    }
+    let (edge, error) = table_edge(k).filter(|&(_, error)| error <= tol)?;
+    panels_at_edge(k, edge, error, traction_tol)
+}
+
+/// [`panels_at_table_edge`] at a given stick edge, known within `error`.
+fn panels_at_edge(
+    k: &Coupling,
+    edge: StickEdge,
+    error: f64,
+    traction_tol: f64,
+) -> Option<CoupledSolution> {
+    let (r, delta) = k.reduced();
+    let consts = Constants {
+        bp: r.bp,
+        bq: r.bq,
+        mu: r.mu,
+        g: r.edge_exponent(),
+    };
+    let oversample = if traction_tol / TRACTION_PER_C < FINE_BELOW {
+        system::OVERSAMPLE_FINE
+    } else {
+        system::OVERSAMPLE
+    };
+    let (c, w) = (edge.c, edge.one_minus_c);
+    let layout = Layout::for_edge(c, w);
+    let mut ls = LeastSquares::default();
+    let at = |x| Pt { x, u: 1.0 - x };
+    let distance = |a: &Discrete, b: &Discrete| {
+        let (dp, dq) = traction_parts(|x| a.eval(at(x)), |x| b.eval(at(x)), [a.mesh.c, b.mesh.c]);
+        dp + delta * dq
+    };
+    let mut prev: Option<Discrete> = None;
+    let mut sensitivity = f64::INFINITY;
+    for (i, &n) in ORDERS.iter().enumerate() {
+        let fams = Families::new(consts.g, n);
+        let mut solve = |c, w| solve_fixed(consts, c, w, n, &fams, &layout, oversample, &mut ls);
+        let d = solve(c, w).ok()?;
+        if n == SENSITIVITY_ORDER {
+            let (c2, w2) = edge_of(c.ln() - w.ln() + SENSITIVITY_STEP);
+            let shifted = solve(c2, w2).ok()?;
+            sensitivity =
+                ORDER_SAFETY * distance(&d, &shifted) * error / (c * w * SENSITIVITY_STEP);
+        }
+        if let Some(p) = &prev {
+            let traction_error =
+                ORDER_SAFETY * distance(&d, p) + d.wrong_c_norm(delta, error) + sensitivity;
+            if traction_error <= traction_tol {
+                let admissible = inadmissible(&d, consts.mu).is_none();
+                return admissible.then_some(CoupledSolution {
+                    coupling: *k,
+                    edge,
+                    error,
+                    traction_error,
+                    delta,
+                    regime: Regime::Panels(d),
+                    order: n,
+                });
+            }
+        }
+        let next = ORDERS.get(i + 1)?;
+        if d.mesh.unknowns * next / n > MAX_UNKNOWNS {
+            return None;
+        }
+        prev = Some(d);
+    }
+    None
 }
 
 /// The panels ([`panels`]), or beyond [`MU_EXTRAPOLATE`] their extrapolation in 1/mu~

@@ -485,3 +485,64 @@ fn auxetic_closer_to_nu_minus_1() {
     assert!(c > 5e-7 && c < 2e-6, "c = {c}");
     check_solution(&k, &s);
 }
+
+/// The panels at a given stick edge (the path behind the tabulated c, no root search)
+/// against the root search's solution at the same coupling: the tractions agree within the
+/// two estimates and satisfy (E1), (E2) by the independent quadratures; with the edge moved
+/// by 1e-9 (and said to be known within that), the estimate still covers the distance (its
+/// sensitivity term).
+#[test]
+fn fixed_edge_panels_match_the_search() {
+    let (bp, bq) = carbon();
+    let cases = [
+        Coupling {
+            bp: steel(),
+            bq: steel(),
+            mu: 0.3,
+        },
+        Coupling {
+            bp: steel(),
+            bq: steel(),
+            mu: 1.0,
+        },
+        Coupling { bp, bq, mu: 0.3 },
+        Coupling {
+            bp: 0.9,
+            bq: 0.9,
+            mu: 30.0,
+        },
+    ];
+    for k in cases {
+        let search = panels(&k, 1e-12, 1e-10).unwrap();
+        let fixed = panels_at_edge(&k, search.edge(), search.numerical_error(), 1e-10).unwrap();
+        let d = crate::problem::traction_distance(&fixed, &search);
+        assert!(fixed.traction_error() <= 1e-10);
+        assert!(
+            d <= fixed.traction_error() + search.traction_error(),
+            "{k:?}: {d:e}"
+        );
+        let worst = check_solution(&k, &fixed);
+        let e = search.edge();
+        let moved = if e.c < 0.5 {
+            StickEdge::from_c(e.c + 1e-9)
+        } else {
+            StickEdge::from_one_minus_c(e.one_minus_c - 1e-9)
+        };
+        let off = panels_at_edge(&k, moved, 1e-9, 1e-6).unwrap();
+        let d_off = crate::problem::traction_distance(&off, &search);
+        assert!(
+            d_off <= off.traction_error(),
+            "{k:?}: moved {d_off:e} > {:e}",
+            off.traction_error()
+        );
+        println!(
+            "{k:?}: order {} vs {}, distance {d:.1e} (estimates {:.1e}, {:.1e}), residual {worst:.1e}; \
+             moved by 1e-9: distance {d_off:.1e}, estimate {:.1e}",
+            fixed.order(),
+            search.order(),
+            fixed.traction_error(),
+            search.traction_error(),
+            off.traction_error()
+        );
+    }
+}

@@ -185,10 +185,7 @@ pub(crate) fn chebyshev_fit(
         })
         .collect();
     let cos = |i: usize| wave[i];
-    let points: Vec<f64> = (0..n)
-        .map(|k| 0.5 * (a + b) + 0.5 * (b - a) * cos(2 * k + 1))
-        .collect();
-    let values = f(&points);
+    let values = f(&chebyshev_points(a, b, n));
     let mut coef = vec![0.0; n];
     for (k, value) in values.iter().enumerate() {
         let step = 2 * k + 1;
@@ -206,6 +203,17 @@ pub(crate) fn chebyshev_fit(
         *c0 *= 0.5;
     }
     coef
+}
+
+/// The n Chebyshev points of the first kind on [a, b], (a + b) / 2 + (b - a) / 2
+/// cos(pi (2k + 1) / (2n)), k = 0..n (descending).
+pub(crate) fn chebyshev_points(a: f64, b: f64, n: usize) -> Vec<f64> {
+    (0..n)
+        .map(|k| {
+            let t = (std::f64::consts::PI * (2 * k + 1) as f64 / (2 * n) as f64).cos();
+            0.5 * (a + b) + 0.5 * (b - a) * t
+        })
+        .collect()
 }
 
 /// sum_j coef_j T_j(t) by Clenshaw's recurrence.

@@ -1,0 +1,267 @@
+//! Regenerates `src/stick_edge_table/table.rs`: COUPLED's stick edge lc = ln(c / (1 - c)) as
+//! piecewise Chebyshev interpolants over the table's coordinates (beta, zeta)
+//! ([`orthoslip::stick_edge_table`]), with a validated bound per patch.
+//!
+//! Run: `cargo run --release --example stick_edge_table` (one command; it prints its runtime,
+//! the number of patches and COUPLED solves, and the largest bound).
+//!
+//! Covered: b* from [`B_FROM`] to 0.99, mu~ from the table's lower edge (the full-slip law's
+//! c = 1e-11) up to at least [`MU_HI`]. Each patch starts at `ROWS` x `COLS` Chebyshev points;
+//! where its coefficient tail (the last two rows and columns, times the patch's largest
+//! c (1 - c)) exceeds [`TAIL_TARGET`] it is halved along the direction with the larger tail.
+//! Accepted patches are then checked at [`CHECKS`] random points against COUPLED; the bound is
+//! the larger of the tail and `SAFETY` times the largest error found there, plus the nodes'
+//! tolerance.
+//!
+//! Nodes are solved to |dc| <= 4 c (1 - c) [`NODE_REL`] (a relative accuracy in lc: the
+//! interpolant spreads a node's error in lc over the whole patch, where c (1 - c) may be
+//! far larger than at the node).
+
+use orthoslip::stick_edge_table::{
+    C_LO, SAFETY, coefficients, coordinates, coupling_at, evaluate, nodes,
+};
+use orthoslip::{Coupling, Profile, StickEdge, coupled};
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::time::Instant;
+
+/// Smallest b* covered.
+const B_FROM: f64 = 0.25;
+/// Largest b* covered.
+const B_TO: f64 = 0.99;
+/// mu~ covered at every b* (the last zeta row of a strip reaches it at the strip's smallest b*).
+const MU_HI: f64 = 4e6;
+/// Initial degrees (beta, zeta).
+const ROWS: usize = 10;
+const COLS: usize = 16;
+/// Largest accepted coefficient tail, in c.
+const TAIL_TARGET: f64 = 5e-12;
+/// Relative accuracy in lc of the nodes.
+const NODE_REL: f64 = 1e-12;
+/// Random checks per patch.
+const CHECKS: usize = 6;
+/// Splits at most this deep.
+const MAX_DEPTH: usize = 4;
+
+/// A solved node: (lc, c (1 - c), tolerance reached in c), or why COUPLED failed.
+type Node = Result<(f64, f64, f64), String>;
+
+/// COUPLED's stick edge at table coordinates.
+fn solve_node(beta: f64, zeta: f64) -> Node {
+    let (b, mu) = coupling_at(beta, zeta);
+    let k = Coupling { bp: b, bq: b, mu };
+    let guess = coupled::solve(&k, 1e-8).map_err(|e| format!("b* {b} mu~ {mu}: {e}"))?;
+    let e = guess.edge();
+    let scale = 4.0 * e.c.min(e.one_minus_c);
+    let mut tol = (scale * NODE_REL).max(1e-300);
+    loop {
+        match coupled::solve(&k, tol) {
+            Ok(s) => {
+                let e = s.edge();
+                let lc = e.c.ln() - e.one_minus_c.ln();
+                return Ok((lc, e.c * e.one_minus_c, s.numerical_error()));
+            }
+            Err(_) if tol < scale * 1e-10 => tol *= 10.0,
+            Err(err) => return Err(format!("b* {b} mu~ {mu} tol {tol:e}: {err}")),
+        }
+    }
+}
+
+/// Solves all points on the available threads.
+fn solve_all(points: &[(f64, f64)]) -> Vec<Node> {
+    let next = AtomicUsize::new(0);
+    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
+    let mut solved: Vec<(usize, Node)> = std::thread::scope(|s| {
+        let workers: Vec<_> = (0..threads)
+            .map(|_| {
+                s.spawn(|| {
+                    let mut mine = Vec::new();
+                    loop {
+                        let i = next.fetch_add(1, Ordering::Relaxed);
+                        let Some(&(beta, zeta)) = points.get(i) else {
+                            return mine;
+                        };
+                        mine.push((i, solve_node(beta, zeta)));
+                    }
+                })
+            })
+            .collect();
+        workers
+            .into_iter()
+            .flat_map(|w| w.join().expect("a solver thread panicked"))
+            .collect()
+    });
+    solved.sort_by_key(|(i, _)| *i);
+    solved.into_iter().map(|(_, node)| node).collect()
+}
+
+struct Built {
+    beta: [f64; 2],
+    zeta: [f64; 2],
+    rows: usize,
+    cols: usize,
+    coef: Vec<f64>,
+    bound: f64,
+}
+
+/// A patch and its splits, appended to `out`; returns the COUPLED solves made.
+fn build(beta: [f64; 2], zeta: [f64; 2], depth: usize, out: &mut Vec<Built>) -> usize {
+    let points = nodes(beta, zeta, ROWS, COLS);
+    let solved = solve_all(&points);
+    let mut values = Vec::with_capacity(points.len());
+    let (mut scale, mut node_tol) = (0.0f64, 0.0f64);
+    for r in &solved {
+        match r {
+            Ok((lc, cw, tol)) => {
+                values.push(*lc);
+                scale = scale.max(*cw);
+                node_tol = node_tol.max(*tol);
+            }
+            Err(e) => panic!("node failed: {e}"),
+        }
+    }
+    let coef = coefficients(&values, ROWS, COLS);
+    let row_tail: f64 = coef[(ROWS - 2) * COLS..]
+        .iter()
+        .map(|v| v.abs())
+        .sum::<f64>()
+        * scale;
+    let col_tail: f64 = coef
+        .chunks(COLS)
+        .map(|r| r[COLS - 2].abs() + r[COLS - 1].abs())
+        .sum::<f64>()
+        * scale;
+    let tail = row_tail.max(col_tail);
+    eprintln!(
+        "patch beta [{:.4}, {:.4}] zeta [{:.3}, {:.3}] depth {depth}: tails {row_tail:.1e} (beta) {col_tail:.1e} (zeta)",
+        beta[0], beta[1], zeta[0], zeta[1]
+    );
+    if tail > TAIL_TARGET && depth < MAX_DEPTH {
+        let mut n = points.len();
+        if row_tail > col_tail {
+            let m = 0.5 * (beta[0] + beta[1]);
+            n += build([beta[0], m], zeta, depth + 1, out);
+            n += build([m, beta[1]], zeta, depth + 1, out);
+        } else {
+            let m = 0.5 * (zeta[0] + zeta[1]);
+            n += build(beta, [zeta[0], m], depth + 1, out);
+            n += build(beta, [m, zeta[1]], depth + 1, out);
+        }
+        return n;
+    }
+    // checks at random points of the patch
+    // seeded by the patch, so that a partial run (`--strip i`) checks the same points
+    let seed = (beta[0].to_bits() ^ zeta[0].to_bits().rotate_left(17)) ^ 7;
+    let mut rng = fastrand::Rng::with_seed(seed);
+    let checks: Vec<(f64, f64)> = (0..CHECKS)
+        .map(|_| {
+            (
+                beta[0] + rng.f64() * (beta[1] - beta[0]),
+                zeta[0] + rng.f64() * (zeta[1] - zeta[0]),
+            )
+        })
+        .collect();
+    let mut worst = 0.0f64;
+    for (p, r) in checks.iter().zip(solve_all(&checks)) {
+        let (lc, _, tol) = r.unwrap_or_else(|e| panic!("check failed: {e}"));
+        let v = evaluate(&coef, (ROWS, COLS), (beta, zeta), *p);
+        worst = worst.max(StickEdge::from_logit(v).distance(StickEdge::from_logit(lc)));
+        node_tol = node_tol.max(tol);
+    }
+    let bound = tail.max(SAFETY * worst) + node_tol;
+    eprintln!("  accepted: checked error {worst:.1e}, bound {bound:.1e}");
+    out.push(Built {
+        beta,
+        zeta,
+        rows: ROWS,
+        cols: COLS,
+        coef,
+        bound,
+    });
+    points.len() + CHECKS
+}
+
+/// The strips' edges in beta = artanh(b*): b* = B_FROM .. 0.3, then six equal steps of beta
+/// up to B_TO.
+fn strips() -> Vec<f64> {
+    let (from, to) = (0.3f64.atanh(), B_TO.atanh());
+    std::iter::once(B_FROM.atanh())
+        .chain((0..=6).map(|i| from + (to - from) * i as f64 / 6.0))
+        .collect()
+}
+
+/// A patch as a line of the generated source.
+fn patch_source(p: &Built) -> String {
+    format!(
+        "    Patch {{ beta: [{:?}, {:?}], zeta: [{:?}, {:?}], rows: {}, cols: {}, bound: {:.2e}, coef: &[{}] }},",
+        p.beta[0],
+        p.beta[1],
+        p.zeta[0],
+        p.zeta[1],
+        p.rows,
+        p.cols,
+        p.bound,
+        p.coef
+            .iter()
+            .map(|v| format!("{v:?}"))
+            .collect::<Vec<_>>()
+            .join(", ")
+    )
+}
+
+fn main() -> std::io::Result<()> {
+    let t = Instant::now();
+    let args: Vec<String> = std::env::args().collect();
+    // `--strip i` builds strip i alone and prints its patches' source lines (for probing and
+    // for building the strips in separate runs; the patches are the same as in a whole run)
+    let only: Option<usize> = args
+        .iter()
+        .position(|a| a == "--strip")
+        .map(|i| args[i + 1].parse().expect("--strip takes a strip index"));
+    let mut out = Vec::new();
+    let mut solves = 0;
+    for (s, w) in strips().windows(2).enumerate() {
+        if only.is_some_and(|o| o != s) {
+            continue;
+        }
+        let (b0, b1) = (w[0], w[1]);
+        // zeta reaching MU_HI at the strip's smallest b* (where mu_lo is smallest)
+        let top = coordinates(b0.tanh(), MU_HI).1;
+        let cuts = [0.0, 2.0, 4.0, 6.0, 9.0, 13.0, top];
+        for z in cuts.windows(2) {
+            solves += build([b0, b1], [z[0], z[1]], 0, &mut out);
+        }
+    }
+    if only.is_some() {
+        for p in &out {
+            println!("{}", patch_source(p));
+        }
+        eprintln!(
+            "{} patches, {solves} solves, {:.1?}",
+            out.len(),
+            t.elapsed()
+        );
+        return Ok(());
+    }
+    let mut src = String::from(
+        "//! Generated by `cargo run --release --example stick_edge_table`; do not edit.\n\n\
+         use super::Patch;\n\n",
+    );
+    src += &format!(
+        "/// {} patches over b* = {B_FROM} .. {B_TO}, mu~ from the full-slip law's c = {C_LO:e} \
+         up to at least {MU_HI:e}.\npub(super) const PATCHES: &[Patch] = &[\n",
+        out.len()
+    );
+    for p in &out {
+        src += &patch_source(p);
+        src += "\n";
+    }
+    src += "];\n";
+    std::fs::write("src/stick_edge_table/table.rs", src)?;
+    let worst = out.iter().map(|p| p.bound).fold(0.0, f64::max);
+    println!(
+        "wrote src/stick_edge_table/table.rs: {} patches, {solves} COUPLED solves, largest bound {worst:.1e}, in {:.1?}",
+        out.len(),
+        t.elapsed()
+    );
+    Ok(())
+}
