@@ -1,8 +1,11 @@
 //! Speed against accuracy: every method at every resolution it offers, on a fixed set of
 //! scenes, timed per solve and compared with a high-accuracy COUPLED solution computed in the
 //! same run (error in c, and max traction error on |x| <= 0.99); AUTO at the default tolerance
-//! is timed too, its row named for the method it chose, and "C ALONE": COUPLED asked for c
-//! only (traction tolerance +infinity).
+//! is timed too, its row named for the method it chose. COUPLED runs as METHOD_COUPLED does
+//! (`coupled::solve_to`, the tolerance on c and on the tractions), "COUPLED (TRACTIONS 1E-8)"
+//! at the speed target's accuracy (c to 1e-10, tractions to 1e-8), "ROOT SEARCH" is
+//! `coupled::solve` at 1e-10 (the panels' own root search, without the tabulated c) and
+//! "C ALONE" COUPLED asked for c only (traction tolerance +infinity).
 //!
 //! Run: `cargo run --release --example speed_accuracy` (one core is enough; ~6 minutes;
 //! writes docs/speed_accuracy.csv, docs/speed_accuracy_medians.md and
@@ -225,12 +228,25 @@ fn measure(
         {
             record("SPENCE", "-".into(), t, &s);
         }
+        // COUPLED as METHOD_COUPLED runs it (tolerance tol on c and on the tractions)
         for tol in [1e-4, 1e-6, 1e-8, 1e-10, 1e-12] {
             if wanted("COUPLED")
-                && let Some((t, s)) = time_solve(|| coupled::solve(&k, tol))
+                && let Some((t, s)) = time_solve(|| coupled::solve_to(&k, tol, tol))
             {
                 record("COUPLED", format!("tol {tol:.0e}"), t, &s);
             }
+        }
+        // the speed target's accuracy: c to 1e-10, tractions to 1e-8
+        if wanted("COUPLED (TRACTIONS 1E-8)")
+            && let Some((t, s)) = time_solve(|| coupled::solve_to(&k, 1e-10, 1e-8))
+        {
+            record("COUPLED (TRACTIONS 1E-8)", "tol 1e-10".into(), t, &s);
+        }
+        // the root search alone (no tabulated c), for the ratio
+        if wanted("ROOT SEARCH")
+            && let Some((t, s)) = time_solve(|| coupled::solve(&k, 1e-10))
+        {
+            record("ROOT SEARCH", "tol 1e-10".into(), t, &s);
         }
         // c alone: COUPLED with a traction tolerance of +infinity
         for tol in [1e-6, 1e-8, 1e-10] {
@@ -313,7 +329,16 @@ fn corner_table(rows: &[Row]) -> Result<(), Box<dyn std::error::Error>> {
 
 /// Rows from a CSV written by [`write_csv`] (scene names are quoted and contain commas).
 fn read_csv(text: &str) -> Result<Vec<Row>, Box<dyn std::error::Error>> {
-    let methods = ["AUTO", "GOODMAN", "SPENCE", "COUPLED", "C ALONE", "LCP"];
+    let methods = [
+        "AUTO",
+        "GOODMAN",
+        "SPENCE",
+        "COUPLED",
+        "COUPLED (TRACTIONS 1E-8)",
+        "ROOT SEARCH",
+        "C ALONE",
+        "LCP",
+    ];
     let mut rows = Vec::new();
     for line in text.lines().skip(1) {
         let (scene, rest) = line[1..].split_once("\",").ok_or("bad CSV line")?;
@@ -394,7 +419,14 @@ fn report(rows: &[Row], write: bool) -> Result<(), Box<dyn std::error::Error>> {
     // Chart: median error in c against median time per solve, one series per method
     // (its resolutions joined), and the Pareto front of those medians.
     let mut series: Vec<Series> = Vec::new();
-    for method in ["GOODMAN", "SPENCE", "LCP", "COUPLED", "C ALONE"] {
+    for method in [
+        "GOODMAN",
+        "SPENCE",
+        "LCP",
+        "COUPLED",
+        "ROOT SEARCH",
+        "C ALONE",
+    ] {
         let pts: Vec<(f64, f64)> = medians
             .iter()
             .filter(|m| m.0 == method)
