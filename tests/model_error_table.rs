@@ -14,6 +14,8 @@
 #[allow(dead_code)]
 #[path = "../examples/model_error_table/generator.rs"]
 mod generator;
+#[path = "../examples/support/mod.rs"]
+mod support;
 
 use generator::{round_up, samples};
 use orthoslip::model_error::{

@@ -5,7 +5,6 @@
 
 use std::fmt::Write as _;
 use std::panic;
-use std::sync::atomic::{AtomicUsize, Ordering};
 
 use orthoslip::model_error::FLOOR;
 use orthoslip::problem::traction_parts;
@@ -61,34 +60,11 @@ pub fn sample(b_star: f64, mu_tilde: f64) -> Result<Sample> {
 /// where the reference fails (an error, or a panic: one bad point must not cost a run of
 /// minutes).
 pub fn samples(points: &[(f64, f64)]) -> Vec<Option<Sample>> {
-    let next = AtomicUsize::new(0);
-    let workers = std::thread::available_parallelism().map_or(1, |n| n.get());
-    let done: Vec<Vec<(usize, Option<Sample>)>> = std::thread::scope(|scope| {
-        let handles: Vec<_> = (0..workers)
-            .map(|_| {
-                scope.spawn(|| {
-                    let mut mine = Vec::new();
-                    loop {
-                        let i = next.fetch_add(1, Ordering::Relaxed);
-                        let Some(&(b, l)) = points.get(i) else {
-                            return mine;
-                        };
-                        let s = panic::catch_unwind(|| sample(b, 10f64.powf(l)).ok());
-                        mine.push((i, s.ok().flatten()));
-                    }
-                })
-            })
-            .collect();
-        handles
-            .into_iter()
-            .map(|h| h.join().expect("a worker of the table generator panicked"))
-            .collect()
-    });
-    let mut out = vec![None; points.len()];
-    for (i, s) in done.into_iter().flatten() {
-        out[i] = s;
-    }
-    out
+    crate::support::parallel::map(points, |&(b, l)| {
+        panic::catch_unwind(|| sample(b, 10f64.powf(l)).ok())
+            .ok()
+            .flatten()
+    })
 }
 
 /// The source text of `table.rs` for the given grids. Each value is rounded up to two

@@ -13,6 +13,8 @@
 //! are spaced geometrically (factors up to 1.5); the rows close to b* = 1 are denser too.
 
 mod generator;
+#[path = "../support/mod.rs"]
+mod support;
 
 fn main() -> std::io::Result<()> {
     let b_star: Vec<f64> = [0.005, 0.0075, 0.01, 0.015, 0.02, 0.03, 0.04, 0.05, 0.075]

@@ -17,11 +17,13 @@
 //! interpolant spreads a node's error in lc over the whole patch, where c (1 - c) may be
 //! far larger than at the node).
 
+#[path = "../support/mod.rs"]
+mod support;
+
 use orthoslip::stick_edge_table::{
     C_LO, SAFETY, coefficients, coordinates, coupling_at, evaluate, nodes,
 };
 use orthoslip::{Coupling, Profile, StickEdge, coupled};
-use std::sync::atomic::{AtomicUsize, Ordering};
 use std::time::Instant;
 
 /// Smallest b* covered.
@@ -68,30 +70,7 @@ fn solve_node(beta: f64, zeta: f64) -> Node {
 
 /// Solves all points on the available threads.
 fn solve_all(points: &[(f64, f64)]) -> Vec<Node> {
-    let next = AtomicUsize::new(0);
-    let threads = std::thread::available_parallelism().map_or(1, |n| n.get());
-    let mut solved: Vec<(usize, Node)> = std::thread::scope(|s| {
-        let workers: Vec<_> = (0..threads)
-            .map(|_| {
-                s.spawn(|| {
-                    let mut mine = Vec::new();
-                    loop {
-                        let i = next.fetch_add(1, Ordering::Relaxed);
-                        let Some(&(beta, zeta)) = points.get(i) else {
-                            return mine;
-                        };
-                        mine.push((i, solve_node(beta, zeta)));
-                    }
-                })
-            })
-            .collect();
-        workers
-            .into_iter()
-            .flat_map(|w| w.join().expect("a solver thread panicked"))
-            .collect()
-    });
-    solved.sort_by_key(|(i, _)| *i);
-    solved.into_iter().map(|(_, node)| node).collect()
+    support::parallel::map(points, |&(beta, zeta)| solve_node(beta, zeta))
 }
 
 struct Built {

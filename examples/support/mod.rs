@@ -1,4 +1,5 @@
 //! Code shared by the examples; each example uses a part of it.
 #![allow(dead_code)]
 
+pub mod parallel;
 pub mod plot;
