@@ -72,7 +72,7 @@ use crate::model_error::Approximation;
 use crate::numerics::lstsq::LeastSquares;
 use crate::numerics::quadrature::gauss_legendre_nodes;
 use crate::numerics::roots::brent;
-use crate::problem::{Coupling, Profile, StickEdge, traction_parts, validate_tolerance};
+use crate::problem::{Coupling, Profile, StickEdge, validate_tolerance};
 use full_slip::FullSlip;
 use large_friction::{LargeFriction, MU_EXTRAPOLATE};
 use mesh::{Layout, Pt};
@@ -842,22 +842,11 @@ fn panels_at_edge(
     error: f64,
     traction_tol: f64,
 ) -> Option<CoupledSolution> {
-    let (r, delta) = k.reduced();
-    let consts = Constants {
-        bp: r.bp,
-        bq: r.bq,
-        mu: r.mu,
-        g: r.edge_exponent(),
-    };
+    let (consts, delta) = reduced_constants(k);
     let oversample = system::OVERSAMPLE;
     let (c, w) = (edge.c, edge.one_minus_c);
     let layout = Layout::for_edge(c, w);
     let mut ls = LeastSquares::default();
-    let at = |x| Pt { x, u: 1.0 - x };
-    let distance = |a: &Discrete, b: &Discrete| {
-        let (dp, dq) = traction_parts(|x| a.eval(at(x)), |x| b.eval(at(x)), [a.mesh.c, b.mesh.c]);
-        dp + delta * dq
-    };
     let mut prev: Option<Discrete> = None;
     let mut sensitivity = f64::INFINITY;
     for (i, &n) in ORDERS.iter().enumerate() {
@@ -867,16 +856,17 @@ fn panels_at_edge(
         if n == SENSITIVITY_ORDER {
             let (c2, w2) = edge_of(c.ln() - w.ln() + SENSITIVITY_STEP);
             let shifted = solve(c2, w2).ok()?;
-            sensitivity =
-                ORDER_SAFETY * distance(&d, &shifted) * error / (c * w * SENSITIVITY_STEP);
+            sensitivity = ORDER_SAFETY * d.traction_distance(&shifted, delta) * error
+                / (c * w * SENSITIVITY_STEP);
             if sensitivity > 0.5 * traction_tol {
                 // the table's c is not accurate enough for these tractions
                 return None;
             }
         }
         if let Some(p) = &prev {
-            let traction_error =
-                ORDER_SAFETY * distance(&d, p) + d.wrong_c_norm(delta, error) + sensitivity;
+            let traction_error = ORDER_SAFETY * d.traction_distance(p, delta)
+                + d.wrong_c_norm(delta, error)
+                + sensitivity;
             if traction_error <= traction_tol {
                 let admissible = inadmissible(&d, consts.mu).is_none();
                 return admissible.then_some(CoupledSolution {
@@ -912,10 +902,9 @@ fn panel_regimes(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSol
     panels(k, tol, traction_tol)
 }
 
-/// The panel discretisation of (E1)-(E4) for `k` (mu > 0) to |c - c_exact| <= tol and a
-/// traction estimate <= traction_tol, or, where no search reaches that, the one with the
-/// smallest estimate of c (the callers compare).
-fn panels(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSolution> {
+/// The system's constants of the reduced coupling (bp = bq = b*, mu~; `k` itself when
+/// bp = 0) and delta (q = delta q~).
+fn reduced_constants(k: &Coupling) -> (Constants, f64) {
     let (r, delta) = if k.bp > 0.0 { k.reduced() } else { (*k, 1.0) };
     let consts = Constants {
         bp: r.bp,
@@ -923,6 +912,14 @@ fn panels(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSolution> 
         mu: r.mu,
         g: r.edge_exponent(),
     };
+    (consts, delta)
+}
+
+/// The panel discretisation of (E1)-(E4) for `k` (mu > 0) to |c - c_exact| <= tol and a
+/// traction estimate <= traction_tol, or, where no search reaches that, the one with the
+/// smallest estimate of c (the callers compare).
+fn panels(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSolution> {
+    let (consts, delta) = reduced_constants(k);
     // tolerances near the defect's rounding noise take the finer (costlier) oversampling
     let oversample = if tol < FINE_BELOW {
         system::OVERSAMPLE_FINE
@@ -932,10 +929,10 @@ fn panels(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSolution> 
     // the first root (where the near-bonded law predicts thin slip zones inside its window,
     // else scanned from below at the cheap order, then at the robust one), its slope, then
     // the orders in turn
-    let window = near_bonded::ln_w_range(r.bp, r.mu)
-        .filter(|&(_, hi)| r.bp > 0.0 && hi < WINDOW_BELOW.ln())
+    let window = near_bonded::ln_w_range(consts.bp, consts.mu)
+        .filter(|&(_, hi)| consts.bp > 0.0 && hi < WINDOW_BELOW.ln())
         .map(|(lo, hi)| (-hi - WINDOW_MARGIN, -lo + WINDOW_MARGIN));
-    let lc0 = goodman_guess(r.bq, r.mu);
+    let lc0 = goodman_guess(consts.bq, consts.mu);
     let scans = search_orders(consts.g, SCAN_ORDERS).map(|order| Start::Scan(lc0, order));
     let starts: Vec<Start> = match window {
         Some((lo, hi)) if 0.5 * (lo + hi) > T_MAX - WINDOW_MARGIN - 1.0 => {
@@ -1055,13 +1052,9 @@ fn panels_from(
         let close = diff <= tol && gap <= (TRACTION_RATIO * tol).max(TRACTION_FLOOR);
         let last = next_unknowns.is_none_or(|u| u > MAX_UNKNOWNS);
         if close || last {
-            let (dp, dq) = traction_parts(
-                |x| next.discrete.eval(Pt { x, u: 1.0 - x }),
-                |x| root.discrete.eval(Pt { x, u: 1.0 - x }),
-                [c, root.discrete.mesh.c],
-            );
-            let traction_error =
-                ORDER_SAFETY * (dp + delta * dq) + next.discrete.wrong_c_norm(delta, diff);
+            let traction_error = ORDER_SAFETY
+                * next.discrete.traction_distance(&root.discrete, delta)
+                + next.discrete.wrong_c_norm(delta, diff);
             if traction_error > traction_tol && !last {
                 root = next;
                 continue;

@@ -496,6 +496,18 @@ impl Discrete {
         }
     }
 
+    /// The distance of these tractions from `other`'s at the same x (each with its own stick
+    /// edge): int |dp| + delta int |dq~| in the norm of [`crate::problem::traction_parts`].
+    pub(crate) fn traction_distance(&self, other: &Discrete, delta: f64) -> f64 {
+        let at = |x| Pt { x, u: 1.0 - x };
+        let (dp, dq) = crate::problem::traction_parts(
+            |x| self.eval(at(x)),
+            |x| other.eval(at(x)),
+            [self.mesh.c, other.mesh.c],
+        );
+        dp + delta * dq
+    }
+
     /// (p, q) at 0 <= x < 1 given as a [`Pt`].
     pub(crate) fn eval(&self, x: Pt) -> (f64, f64) {
         let panel = &self.mesh.panels[self.mesh.locate(x)];
