@@ -165,8 +165,9 @@ const ORDER_SAFETY: f64 = 2.0;
 
 /// The order at which [`panels_at_table_edge`] measures how the tractions move with c, and
 /// the step in lc = ln(c / (1 - c)) it takes (far above the tractions' rounding at that order,
-/// small enough to be linear).
-const SENSITIVITY_ORDER: usize = 8;
+/// small enough to be linear). The lowest of [`ORDERS`]: a rate of change needs no more (one
+/// solve at order 6 instead of 8 took 7% off the median fixed-c solve, 12 benchmark scenes).
+const SENSITIVITY_ORDER: usize = 6;
 const SENSITIVITY_STEP: f64 = 1e-6;
 
 /// Tolerances below which the finer oversampling is used (defect's noise at the default one
@@ -817,16 +818,14 @@ fn tabulated(k: &Coupling, tol: f64) -> Option<CoupledSolution> {
 
 /// The panels at the tabulated stick edge, where its bound meets `tol` (below
 /// [`MU_EXTRAPOLATE`]): no root search, one solve per order ([`ORDERS`]) at that c, until the
-/// traction estimate meets `traction_tol`, at the default oversampling (the finer one is for
-/// the root search's defect noise; 1.35x faster at tol 1e-10 on the 12 benchmark scenes,
-/// median traction error 1.7e-12). The estimate is [`ORDER_SAFETY`] times the
-/// distance of the last two orders' tractions, plus the norm of the wrong-c modes they leave
-/// out (as in [`panels_from`]), plus what the table's error in c moves the tractions: at
-/// [`SENSITIVITY_ORDER`] the distance of the tractions at c and at lc + [`SENSITIVITY_STEP`],
-/// scaled to the bound (linear in it) and times ORDER_SAFETY. None where that term alone
-/// takes half the traction tolerance (large friction, b* -> 1: up to 1.2e-9 for the table's
-/// 3e-12), the last order misses it or the solution is inadmissible (the root search decides
-/// there).
+/// traction estimate meets `traction_tol`, at [`system::OVERSAMPLE_AT_KNOWN_C`]. The estimate
+/// is [`ORDER_SAFETY`] times the distance of the last two orders' tractions, plus the norm of
+/// the wrong-c modes they leave out (as in [`panels_from`]), plus what the table's error in c
+/// moves the tractions: at [`SENSITIVITY_ORDER`] the distance of the tractions at c and at lc +
+/// [`SENSITIVITY_STEP`], scaled to the bound (linear in it) and times ORDER_SAFETY. None where
+/// that term alone takes half the traction tolerance (large friction, b* -> 1: up to 1.2e-9 for
+/// the table's 3e-12), the last order misses it or the solution is inadmissible (the root
+/// search decides there).
 fn panels_at_table_edge(k: &Coupling, tol: f64, traction_tol: f64) -> Option<CoupledSolution> {
     if k.reduced().0.mu >= MU_EXTRAPOLATE {
         return None;
@@ -843,7 +842,7 @@ fn panels_at_edge(
     traction_tol: f64,
 ) -> Option<CoupledSolution> {
     let (consts, delta) = reduced_constants(k);
-    let oversample = system::OVERSAMPLE;
+    let oversample = system::OVERSAMPLE_AT_KNOWN_C;
     let (c, w) = (edge.c, edge.one_minus_c);
     let layout = Layout::for_edge(c, w);
     let mut ls = LeastSquares::default();
