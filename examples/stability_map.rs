@@ -4,11 +4,15 @@
 //! the engineering-constant extremes that lead to its edges (section 5: mu -> 0 and -> infinity,
 //! kappa -> -nu, kappa = 1, delta far from 1, nu -> 1 i.e. A -> 0, near-incompressible plane
 //! strain, auxetic nu -> -1 i.e. b* -> 1). For every scene and method (GOODMAN, SPENCE, LCP on
-//! 200 panels, COUPLED to 1e-10) it records the status (converged, or the error kind), the
-//! LCP Newton iterations or the COUPLED order, c, 1 - c, the error in c against the COUPLED
-//! reference and the method's own estimate against that error (`numerical_error`, plus
-//! `model_error::bound` for GOODMAN and SPENCE, +infinity where the table gives none, as
-//! `Contact` reports it); COUPLED itself is checked against a tighter COUPLED run (1e-12).
+//! 200 panels, COUPLED as METHOD_COUPLED runs it: c and the tractions to 1e-10) it records
+//! the status (converged, or the error kind), the LCP Newton iterations or the COUPLED order,
+//! c, 1 - c, the error in c against the COUPLED reference and the method's own estimate
+//! against that error (`numerical_error`, plus `model_error::bound` for GOODMAN and SPENCE,
+//! +infinity where the table gives none, as `Contact` reports it), and the same for the
+//! tractions (`traction_error` plus `model_error::traction_bound`, against the reference's
+//! tractions in the norm of `problem::traction_distance`); COUPLED itself is checked against
+//! a tighter COUPLED run (c and tractions to 1e-12). The plane's scenes are spread over the
+//! cores (one solve per core at a time, so the times are one core's).
 //!
 //! Run: `cargo run --release --example stability_map` (writes docs/stability_map.csv,
 //! docs/stability_{goodman,spence,lcp,coupled,status}.svg and prints a failure summary).
@@ -21,9 +25,11 @@ use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::time::Instant;
 
 use orthoslip::model_error::{self, Approximation};
+use orthoslip::problem::traction_distance;
 use orthoslip::{
     Coupling, Error, Material, Method, Profile, StickEdge, coupled, goodman, lcp, spence,
 };
+use support::parallel;
 use support::plot::{Scale, Series, chart, heatmap};
 
 /// The methods mapped, in CSV order.
@@ -44,6 +50,10 @@ enum Outcome {
     Solved {
         edge: StickEdge,
         estimate: f64,
+        /// The traction estimate (the profile's own plus the model error's bound).
+        traction_estimate: f64,
+        /// The solution, for the traction comparisons.
+        profile: Box<dyn Profile>,
         /// LCP Newton iterations on the finest grid, or the COUPLED order per panel.
         iterations: Option<usize>,
     },
@@ -67,6 +77,22 @@ impl Run {
         }
     }
 
+    fn profile(&self) -> Option<&dyn Profile> {
+        match &self.outcome {
+            Outcome::Solved { profile, .. } => Some(profile.as_ref()),
+            Outcome::Failed { .. } => None,
+        }
+    }
+
+    fn traction_estimate(&self) -> Option<f64> {
+        match self.outcome {
+            Outcome::Solved {
+                traction_estimate, ..
+            } => Some(traction_estimate),
+            Outcome::Failed { .. } => None,
+        }
+    }
+
     fn status(&self) -> &'static str {
         match &self.outcome {
             Outcome::Solved { .. } => "ok",
@@ -86,18 +112,24 @@ fn error_kind(e: &Error) -> &'static str {
     }
 }
 
-/// The model-error bound of an approximation, +infinity where none is tabulated.
-fn model(a: Approximation, k: &Coupling) -> f64 {
-    model_error::bound(a, k).unwrap_or(f64::INFINITY)
+/// The model-error bounds of an approximation (c, tractions), +infinity where none is
+/// tabulated.
+fn model(a: Approximation, k: &Coupling) -> (f64, f64) {
+    (
+        model_error::bound(a, k).unwrap_or(f64::INFINITY),
+        model_error::traction_bound(a, k).unwrap_or(f64::INFINITY),
+    )
 }
 
-/// A solved profile with its estimate (`numerical_error` plus `model`), unless its edge breaks
+/// A solved profile with its estimates (`numerical_error` and `traction_error` plus the
+/// model's bounds), unless its edge breaks
 /// the contract: c in [0, 1] (c = 1 only as the rounding of 1 - w for w < 2^-53), 1 - c in
 /// (0, 1], an estimate >= 0 (+infinity: no bound known). A slip width that underflows to 0 is
 /// reported as `SlipUnderflow`.
-fn solved(p: &dyn Profile, model: f64, iterations: Option<usize>) -> Outcome {
+fn solved<P: Profile + 'static>(p: P, model: (f64, f64), iterations: Option<usize>) -> Outcome {
     let edge = p.edge();
-    let estimate = p.numerical_error() + model;
+    let estimate = p.numerical_error() + model.0;
+    let traction_estimate = p.traction_error() + model.1;
     let w = edge.one_minus_c;
     let valid = (0.0..=1.0).contains(&edge.c)
         && (edge.c < 1.0 || w <= f64::EPSILON)
@@ -109,6 +141,8 @@ fn solved(p: &dyn Profile, model: f64, iterations: Option<usize>) -> Outcome {
         return Outcome::Solved {
             edge,
             estimate,
+            traction_estimate,
+            profile: Box::new(p),
             iterations,
         };
     } else if w == 0.0 && edge.c == 1.0 {
@@ -122,20 +156,23 @@ fn solved(p: &dyn Profile, model: f64, iterations: Option<usize>) -> Outcome {
     }
 }
 
-/// Solves `k` by `method` (COUPLED to `tol`), catching errors and panics.
+/// Solves `k` by `method` (COUPLED to `tol` in c and in the tractions), catching errors and
+/// panics.
 fn run(method: Method, k: &Coupling, tol: f64) -> Run {
     let start = Instant::now();
     let result = catch_unwind(AssertUnwindSafe(|| -> orthoslip::Result<Outcome> {
         Ok(match method {
-            Method::Goodman => solved(&goodman::solve(k)?, model(Approximation::Goodman, k), None),
-            Method::Spence => solved(&spence::solve(k)?, model(Approximation::Spence, k), None),
+            Method::Goodman => solved(goodman::solve(k)?, model(Approximation::Goodman, k), None),
+            Method::Spence => solved(spence::solve(k)?, model(Approximation::Spence, k), None),
             Method::Lcp => {
                 let s = lcp::solve(k, LCP_PANELS)?;
-                solved(&s, 0.0, Some(s.newton_iterations()))
+                let n = s.newton_iterations();
+                solved(s, (0.0, 0.0), Some(n))
             }
             Method::Coupled => {
-                let s = coupled::solve(k, tol)?;
-                solved(&s, 0.0, Some(s.order()))
+                let s = coupled::solve_to(k, tol, tol)?;
+                let n = s.order();
+                solved(s, (0.0, 0.0), Some(n))
             }
             Method::Auto => {
                 return Err(Error::InvalidArgument("AUTO is not mapped".into()));
@@ -160,6 +197,7 @@ fn run(method: Method, k: &Coupling, tol: f64) -> Run {
 }
 
 /// A point of the map: where it comes from and its coupling.
+#[derive(Clone)]
 struct Scene {
     family: &'static str,
     label: String,
@@ -300,6 +338,37 @@ impl Solved {
         Some(self.runs[i].edge()?.distance(self.reference(i)?))
     }
 
+    /// The reference's tractions for method i (as [`Self::reference`]).
+    fn reference_profile(&self, i: usize) -> Option<&dyn Profile> {
+        if METHODS[i] == Method::Coupled {
+            self.tight.as_ref()?.profile()
+        } else {
+            self.coupled().profile()
+        }
+    }
+
+    /// The traction distance of method i from its reference, where both exist.
+    fn traction_true_error(&self, i: usize) -> Option<f64> {
+        Some(traction_distance(
+            self.runs[i].profile()?,
+            self.reference_profile(i)?,
+        ))
+    }
+
+    /// Whether method i's traction estimate misses its true traction error by more than the
+    /// reference's own traction estimate (None where there is nothing to compare).
+    fn underestimates_tractions(&self, i: usize) -> Option<bool> {
+        let reference = if METHODS[i] == Method::Coupled {
+            self.tight.as_ref()?
+        } else {
+            self.coupled()
+        };
+        Some(
+            self.traction_true_error(i)?
+                > self.runs[i].traction_estimate()? + reference.traction_estimate()?,
+        )
+    }
+
     /// Accuracy of method i's reference.
     fn reference_tol(i: usize) -> f64 {
         if METHODS[i] == Method::Coupled {
@@ -321,14 +390,23 @@ impl Solved {
     }
 }
 
-fn csv_row(csv: &mut String, s: &Solved, name: &str, r: &Run, reference: Option<StickEdge>) {
+/// One CSV row: run `r` of scene `s`, with its reference's edge and tractions.
+fn csv_row(
+    csv: &mut String,
+    s: &Solved,
+    name: &str,
+    r: &Run,
+    reference: Option<(StickEdge, &dyn Profile)>,
+) {
     let sc = &s.scene;
     let opt = |v: Option<f64>| v.map_or(String::new(), |v| format!("{v:e}"));
+    let reference_edge = reference.map(|r| r.0);
     let (iterations, c, w, estimate, message) = match &r.outcome {
         Outcome::Solved {
             edge,
             estimate,
             iterations,
+            ..
         } => (
             iterations.map_or(String::new(), |n| n.to_string()),
             Some(edge.c),
@@ -338,11 +416,16 @@ fn csv_row(csv: &mut String, s: &Solved, name: &str, r: &Run, reference: Option<
         ),
         Outcome::Failed { message, .. } => (String::new(), None, None, None, message.clone()),
     };
-    let err = r.edge().zip(reference).map(|(a, b)| a.distance(b));
+    let err = r.edge().zip(reference_edge).map(|(a, b)| a.distance(b));
     let ratio = estimate.zip(err).map(|(e, t)| e / t);
+    let t_est = r.traction_estimate();
+    let t_err = r
+        .profile()
+        .zip(reference)
+        .map(|(p, (_, q))| traction_distance(p, q));
     let _ = writeln!(
         csv,
-        "{},\"{}\",{:e},{:e},{:e},{:e},{:e},{name},{},{iterations},{},{},{},{},{},{},{},{:.3e},\"{}\"",
+        "{},\"{}\",{:e},{:e},{:e},{:e},{:e},{name},{},{iterations},{},{},{},{},{},{},{},{},{},{:.3e},\"{}\"",
         sc.family,
         sc.label,
         sc.b_star(),
@@ -354,18 +437,20 @@ fn csv_row(csv: &mut String, s: &Solved, name: &str, r: &Run, reference: Option<
         opt(c),
         opt(w),
         opt(estimate),
-        opt(reference.map(|e| e.c)),
-        opt(reference.map(|e| e.one_minus_c)),
+        opt(reference_edge.map(|e| e.c)),
+        opt(reference_edge.map(|e| e.one_minus_c)),
         opt(err),
         opt(ratio),
+        opt(t_est),
+        opt(t_err),
         r.seconds,
         message.replace('"', "'"),
     );
 }
 
 const CSV_HEADER: &str = "family,scene,b_star,mu_tilde,bp,bq,mu,method,status,iterations,c,\
-one_minus_c,estimate,reference_c,reference_one_minus_c,true_error,estimate_over_true,seconds,\
-message\n";
+one_minus_c,estimate,reference_c,reference_one_minus_c,true_error,estimate_over_true,\
+traction_estimate,traction_true_error,seconds,message\n";
 
 fn method_name(m: Method) -> &'static str {
     match m {
@@ -389,38 +474,40 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     std::fs::create_dir_all("docs")?;
     let t0 = Instant::now();
     let (b_axis, mu_axis) = plane_axes();
-    let mut plane = Vec::new();
-    for &b in &b_axis {
-        for &mu in &mu_axis {
-            plane.push(Solved::new(Scene {
+    let solve_all = |scenes: &[Scene]| parallel::map(scenes, |s| Solved::new(s.clone()));
+    let plane_scenes: Vec<Scene> = b_axis
+        .iter()
+        .flat_map(|&b| {
+            mu_axis.iter().map(move |&mu| Scene {
                 family: "plane",
                 label: format!("b*={b:.4} mu~={mu:.3e}"),
                 k: Coupling { bp: b, bq: b, mu },
-            }));
-        }
-        eprintln!("b* = {b:.3}: {:.1} s", t0.elapsed().as_secs_f64());
-    }
-    let mut engineering: Vec<Solved> = b_axis
-        .iter()
-        .map(|&b| {
-            Solved::new(Scene {
-                family: "plane-mu0",
-                label: format!("b*={b:.4} mu=0"),
-                k: Coupling {
-                    bp: b,
-                    bq: b,
-                    mu: 0.0,
-                },
             })
         })
         .collect();
-    engineering.extend(engineering_scenes()?.into_iter().map(Solved::new));
+    let plane = solve_all(&plane_scenes);
+    eprintln!("plane: {:.1} s", t0.elapsed().as_secs_f64());
+    let mut engineering_list: Vec<Scene> = b_axis
+        .iter()
+        .map(|&b| Scene {
+            family: "plane-mu0",
+            label: format!("b*={b:.4} mu=0"),
+            k: Coupling {
+                bp: b,
+                bq: b,
+                mu: 0.0,
+            },
+        })
+        .collect();
+    engineering_list.extend(engineering_scenes()?);
+    let engineering = solve_all(&engineering_list);
     eprintln!("engineering scenes: {:.1} s", t0.elapsed().as_secs_f64());
 
     let mut csv = String::from(CSV_HEADER);
     for s in plane.iter().chain(&engineering) {
         for (i, &m) in METHODS.iter().enumerate() {
-            csv_row(&mut csv, s, method_name(m), &s.runs[i], s.reference(i));
+            let reference = s.reference(i).zip(s.reference_profile(i));
+            csv_row(&mut csv, s, method_name(m), &s.runs[i], reference);
         }
         if let Some(t) = &s.tight {
             csv_row(&mut csv, s, "COUPLED_TIGHT", t, None);
@@ -566,6 +653,14 @@ fn summary(plane: &[Solved], engineering: &[Solved]) {
                 .iter()
                 .filter_map(|s| s.true_error(i))
                 .fold(0.0, f64::max);
+            let t_checks: Vec<bool> = set
+                .iter()
+                .filter_map(|s| s.underestimates_tractions(i))
+                .collect();
+            let t_worst = set
+                .iter()
+                .filter_map(|s| s.traction_true_error(i))
+                .fold(0.0, f64::max);
             println!(
                 "{:8} {:.1} s; estimate below true error (beyond the reference's accuracy) in \
                  {} of {} compared; largest true error {worst:.2e}",
@@ -573,6 +668,12 @@ fn summary(plane: &[Solved], engineering: &[Solved]) {
                 set.iter().map(|s| s.runs[i].seconds).sum::<f64>(),
                 checks.iter().filter(|&&u| u).count(),
                 checks.len(),
+            );
+            println!(
+                "         tractions: estimate below true error (beyond the reference's estimate) \
+                 in {} of {} compared; largest true error {t_worst:.2e}",
+                t_checks.iter().filter(|&&u| u).count(),
+                t_checks.len(),
             );
             for (status, scenes) in by_status {
                 let range = |f: fn(&Scene) -> f64| {
@@ -610,7 +711,8 @@ fn summary(plane: &[Solved], engineering: &[Solved]) {
 }
 
 /// The plane as text for method i: one line per b*, one character per mu~: `.` solved with
-/// the estimate covering the true error, `u` solved but the estimate misses it, `i` solved
+/// the estimates covering the true errors, `u` solved but the estimate of c misses its error,
+/// `t` the traction estimate misses the traction error, `i` solved
 /// with an infinite estimate (no bound known), `o` solved without a reference, or the first
 /// letter of the failure status.
 fn text_map(plane: &[Solved], b_axis: &[f64], mu_axis: &[f64], i: usize) {
@@ -627,6 +729,7 @@ fn text_map(plane: &[Solved], b_axis: &[f64], mu_axis: &[f64], i: usize) {
                 (Outcome::Failed { status, .. }, _) => status.chars().next().unwrap_or('?'),
                 (Outcome::Solved { estimate, .. }, _) if estimate.is_infinite() => 'i',
                 (Outcome::Solved { .. }, Some(true)) => 'u',
+                (Outcome::Solved { .. }, _) if s.underestimates_tractions(i) == Some(true) => 't',
                 (Outcome::Solved { .. }, Some(false)) => '.',
                 (Outcome::Solved { .. }, None) => 'o',
             })
