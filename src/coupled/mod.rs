@@ -820,7 +820,7 @@ fn tabulated(k: &Coupling, tol: f64) -> Option<CoupledSolution> {
 
 /// The panels at the tabulated stick edge, where its bound meets `tol` (below
 /// [`MU_EXTRAPOLATE`]): no root search, one solve per order ([`ORDERS`]) at that c, until the
-/// traction estimate meets `traction_tol`, at [`system::OVERSAMPLE_AT_KNOWN_C`]. The estimate
+/// traction estimate meets `traction_tol`, at [`system::oversample_at_known_c`]. The estimate
 /// is [`ORDER_SAFETY`] times the distance of the last two orders' tractions, plus the norm of
 /// the wrong-c modes they leave out (as in [`panels_from`]), plus what the table's error in c
 /// moves the tractions: at [`SENSITIVITY_ORDER`] the distance of the tractions at c and at lc +
@@ -844,7 +844,7 @@ fn panels_at_edge(
     traction_tol: f64,
 ) -> Option<CoupledSolution> {
     let (consts, delta) = reduced_constants(k);
-    let oversample = system::OVERSAMPLE_AT_KNOWN_C;
+    let oversample = system::oversample_at_known_c(traction_tol);
     let (c, w) = (edge.c, edge.one_minus_c);
     let layout = Layout::for_edge(c, w);
     let mut ls = LeastSquares::default();

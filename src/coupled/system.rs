@@ -23,12 +23,20 @@ use std::f64::consts::PI;
 /// panels at c from amplifying rounding errors (square collocation loses 3-4 digits in c).
 pub(crate) const OVERSAMPLE: f64 = 2.0;
 
-/// Oversampling at a stick edge known in advance (the tabulated c): no defect to resolve,
-/// only the tractions, whose least-squares error stays well inside the order-to-order
-/// estimate with 1.5 points per unknown (12 benchmark scenes and 8 of the reduced plane at
-/// traction tolerances 1e-6 .. 1e-10: true error at most 0.37 of the estimate, against 0.11
-/// with 2 points; 22% less time in all; 1 point per unknown left errors of 6e-8 at 1e-8).
-pub(crate) const OVERSAMPLE_AT_KNOWN_C: f64 = 1.5;
+/// Oversampling at a stick edge known in advance (the tabulated c), for traction tolerance
+/// `traction_tol`: no defect to resolve there, only the tractions. From 1e-9 up, 1.5 points
+/// per unknown: the least-squares error stays well inside the order-to-order estimate (12
+/// benchmark scenes and 8 of the reduced plane at 1e-6 .. 1e-10: true error at most 0.37 of
+/// the estimate, against 0.11 with 2 points; median time at 1e-8 4.3 ms against 5.6 ms; one
+/// point per unknown left errors of 6e-8 at 1e-8). Below, [`OVERSAMPLE`]: with 1.5 the
+/// estimate met 1e-10 an order later (median 8.7 ms against 5.6 ms).
+pub(crate) fn oversample_at_known_c(traction_tol: f64) -> f64 {
+    if traction_tol >= 1e-9 {
+        1.5
+    } else {
+        OVERSAMPLE
+    }
+}
 
 /// Oversampling for tolerances at defect's rounding noise: 3 points per unknown lower that
 /// noise 10-50 times at orders >= 8 (measured), for 1.6 times the least-squares work.
