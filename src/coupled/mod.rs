@@ -184,6 +184,16 @@ const SCAN_XTOL: f64 = 1e-4;
 /// unknowns grow past [`MAX_UNKNOWNS`] first (thin slip zones) the ladder stops before.
 const ORDERS: [usize; 10] = [6, 8, 11, 13, 16, 19, 22, 26, 30, 34];
 
+/// Whether the panels grow no further after order n with `unknowns` unknowns: the next of
+/// [`ORDERS`] would exceed [`MAX_UNKNOWNS`] (the panels stay, the unknowns grow with the
+/// order), or there is none.
+fn at_largest_order(unknowns: usize, n: usize) -> bool {
+    ORDERS
+        .iter()
+        .find(|&&m| m > n)
+        .is_none_or(|&m| unknowns * m / n > MAX_UNKNOWNS)
+}
+
 /// The coupled solution: stick edge, error estimates and the tractions of its regime.
 #[derive(Clone, Debug)]
 pub struct CoupledSolution {
@@ -709,7 +719,7 @@ fn not_met(estimate: f64, tolerance: f64, s: &CoupledSolution) -> Error {
 /// out at up to [`TRACTION_PER_C`] times their tolerance on c: they are run to
 /// min(tol, traction_tol / TRACTION_PER_C), and where the traction estimate still misses
 /// traction_tol re-run with the tolerance on c scaled down by the ratio missed (twice over),
-/// down to [`TIGHTEST`].
+/// down to [`TIGHTEST`], unless they stopped at their largest order ([`at_largest_order`]).
 pub fn solve_to(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSolution> {
     k.validate()?;
     validate_tolerance(tol)?;
@@ -740,7 +750,12 @@ pub fn solve_to(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSolu
         if s.error <= asked && e <= traction_tol {
             return Ok(s);
         }
-        if s.error > tol || tol <= TIGHTEST {
+        // panels stopped at their largest order stop there again with c tightened (their
+        // traction estimate is the order-to-order distance, which c's tolerance does not
+        // lower: thin slip zones, 17-35 s per futile re-run)
+        let at_largest = matches!(&s.regime, Regime::Panels(d)
+            if at_largest_order(d.mesh.unknowns, s.order));
+        if s.error > tol || tol <= TIGHTEST || at_largest {
             return Err(if s.error > asked {
                 not_met(s.error, asked, &s)
             } else {
@@ -850,7 +865,7 @@ fn panels_at_edge(
     let mut ls = LeastSquares::default();
     let mut prev: Option<Discrete> = None;
     let mut sensitivity = f64::INFINITY;
-    for (i, &n) in ORDERS.iter().enumerate() {
+    for &n in &ORDERS {
         let fams = Families::new(consts.g, n);
         let mut solve = |c, w| solve_fixed(consts, c, w, n, &fams, &layout, oversample, &mut ls);
         let d = solve(c, w).ok()?;
@@ -881,8 +896,7 @@ fn panels_at_edge(
                 });
             }
         }
-        let next = ORDERS.get(i + 1)?;
-        if d.mesh.unknowns * next / n > MAX_UNKNOWNS {
+        if at_largest_order(d.mesh.unknowns, n) {
             return None;
         }
         prev = Some(d);
@@ -1047,11 +1061,8 @@ fn panels_from(
         let (c, w) = edge_of(next.lc);
         let diff = order_difference(&root, &next);
         let gap = traction_gap(&next.discrete, &root.discrete);
-        // the next order's unknowns grow with the order (the panels stay)
-        let next_n = ORDERS.iter().find(|&&m| m > n);
-        let next_unknowns = next_n.map(|&m| next.discrete.mesh.unknowns * m / n);
         let close = diff <= tol && gap <= (TRACTION_RATIO * tol).max(TRACTION_FLOOR);
-        let last = next_unknowns.is_none_or(|u| u > MAX_UNKNOWNS);
+        let last = at_largest_order(next.discrete.mesh.unknowns, n);
         if close || last {
             let traction_error = ORDER_SAFETY
                 * next.discrete.traction_distance(&root.discrete, delta)
