@@ -303,6 +303,8 @@ struct Solved {
     runs: Vec<Run>,
     /// COUPLED to `TIGHT_TOL` (not run where COUPLED to `COUPLED_TOL` failed).
     tight: Option<Run>,
+    /// Per method, the traction distance from its reference's tractions, where both exist.
+    traction_errors: Vec<Option<f64>>,
 }
 
 impl Solved {
@@ -316,7 +318,19 @@ impl Solved {
             Outcome::Solved { .. } => Some(run(Method::Coupled, &scene.k, TIGHT_TOL)),
             Outcome::Failed { .. } => None,
         };
-        Self { scene, runs, tight }
+        let mut s = Self {
+            scene,
+            runs,
+            tight,
+            traction_errors: Vec::new(),
+        };
+        s.traction_errors = (0..METHODS.len())
+            .map(|i| {
+                let reference = s.reference_run(i)?.profile()?;
+                Some(traction_distance(s.runs[i].profile()?, reference))
+            })
+            .collect();
+        s
     }
 
     /// The COUPLED run at `COUPLED_TOL`.
@@ -324,13 +338,18 @@ impl Solved {
         &self.runs[METHODS.len() - 1]
     }
 
-    /// The reference of method i: COUPLED, or the tighter COUPLED for COUPLED itself.
-    fn reference(&self, i: usize) -> Option<StickEdge> {
+    /// The reference run of method i: COUPLED, or the tighter COUPLED for COUPLED itself.
+    fn reference_run(&self, i: usize) -> Option<&Run> {
         if METHODS[i] == Method::Coupled {
-            self.tight.as_ref()?.edge()
+            self.tight.as_ref()
         } else {
-            self.coupled().edge()
+            Some(self.coupled())
         }
+    }
+
+    /// The reference edge of method i.
+    fn reference(&self, i: usize) -> Option<StickEdge> {
+        self.reference_run(i)?.edge()
     }
 
     /// |c - c_ref| of method i, where both exist.
@@ -338,35 +357,16 @@ impl Solved {
         Some(self.runs[i].edge()?.distance(self.reference(i)?))
     }
 
-    /// The reference's tractions for method i (as [`Self::reference`]).
-    fn reference_profile(&self, i: usize) -> Option<&dyn Profile> {
-        if METHODS[i] == Method::Coupled {
-            self.tight.as_ref()?.profile()
-        } else {
-            self.coupled().profile()
-        }
-    }
-
     /// The traction distance of method i from its reference, where both exist.
     fn traction_true_error(&self, i: usize) -> Option<f64> {
-        Some(traction_distance(
-            self.runs[i].profile()?,
-            self.reference_profile(i)?,
-        ))
+        self.traction_errors[i]
     }
 
     /// Whether method i's traction estimate misses its true traction error by more than the
     /// reference's own traction estimate (None where there is nothing to compare).
     fn underestimates_tractions(&self, i: usize) -> Option<bool> {
-        let reference = if METHODS[i] == Method::Coupled {
-            self.tight.as_ref()?
-        } else {
-            self.coupled()
-        };
-        Some(
-            self.traction_true_error(i)?
-                > self.runs[i].traction_estimate()? + reference.traction_estimate()?,
-        )
+        let slack = self.reference_run(i)?.traction_estimate()?;
+        Some(self.traction_true_error(i)? > self.runs[i].traction_estimate()? + slack)
     }
 
     /// Accuracy of method i's reference.
@@ -390,17 +390,12 @@ impl Solved {
     }
 }
 
-/// One CSV row: run `r` of scene `s`, with its reference's edge and tractions.
-fn csv_row(
-    csv: &mut String,
-    s: &Solved,
-    name: &str,
-    r: &Run,
-    reference: Option<(StickEdge, &dyn Profile)>,
-) {
+/// One CSV row: run `r` of scene `s`, compared with its reference where it is method i's run
+/// (the tight COUPLED run has none).
+fn csv_row(csv: &mut String, s: &Solved, name: &str, r: &Run, method: Option<usize>) {
     let sc = &s.scene;
     let opt = |v: Option<f64>| v.map_or(String::new(), |v| format!("{v:e}"));
-    let reference_edge = reference.map(|r| r.0);
+    let reference_edge = method.and_then(|i| s.reference(i));
     let (iterations, c, w, estimate, message) = match &r.outcome {
         Outcome::Solved {
             edge,
@@ -419,10 +414,7 @@ fn csv_row(
     let err = r.edge().zip(reference_edge).map(|(a, b)| a.distance(b));
     let ratio = estimate.zip(err).map(|(e, t)| e / t);
     let t_est = r.traction_estimate();
-    let t_err = r
-        .profile()
-        .zip(reference)
-        .map(|(p, (_, q))| traction_distance(p, q));
+    let t_err = method.and_then(|i| s.traction_true_error(i));
     let _ = writeln!(
         csv,
         "{},\"{}\",{:e},{:e},{:e},{:e},{:e},{name},{},{iterations},{},{},{},{},{},{},{},{},{},{:.3e},\"{}\"",
@@ -506,8 +498,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut csv = String::from(CSV_HEADER);
     for s in plane.iter().chain(&engineering) {
         for (i, &m) in METHODS.iter().enumerate() {
-            let reference = s.reference(i).zip(s.reference_profile(i));
-            csv_row(&mut csv, s, method_name(m), &s.runs[i], reference);
+            csv_row(&mut csv, s, method_name(m), &s.runs[i], Some(i));
         }
         if let Some(t) = &s.tight {
             csv_row(&mut csv, s, "COUPLED_TIGHT", t, None);
