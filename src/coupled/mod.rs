@@ -177,6 +177,9 @@ const FINE_BELOW: f64 = 1e-11;
 /// Accuracy in lc of the first root at the scan order (a start for the higher orders).
 const SCAN_XTOL: f64 = 1e-4;
 
+/// Largest accuracy in lc asked of a root at the orders after the scan.
+const LOOSEST_XTOL: f64 = 1e-3;
+
 /// Polynomial orders tried in turn (per panel) after the scan order: steps of 2 or 3, so
 /// that the order whose error first falls below the tolerance is soon confirmed by the next
 /// (the error falls by 10-100 per step of 2, THEORY.md section 5 / tests.rs). Up to 34: at
@@ -326,6 +329,10 @@ struct Level<'a> {
     /// The least-squares solver of this level's systems (from the lower orders: once they
     /// needed the pivoted QR, so do the higher ones).
     ls: LeastSquares,
+    /// The lower order's solution, whose field weights the rows of every solve at this
+    /// level (the same weights throughout, so that defect(lc) stays smooth); None: the rows
+    /// unweighted ([`system::weighs_rows`]).
+    model: Option<Discrete>,
 }
 
 impl<'a> Level<'a> {
@@ -336,6 +343,7 @@ impl<'a> Level<'a> {
         xtol: f64,
         oversample: f64,
         ls: LeastSquares,
+        model: Option<Discrete>,
     ) -> Self {
         Level {
             k,
@@ -347,6 +355,7 @@ impl<'a> Level<'a> {
             solved: [None, None],
             oversample,
             ls,
+            model,
         }
     }
 
@@ -375,6 +384,7 @@ impl<'a> Level<'a> {
             layout,
             self.oversample,
             &mut self.ls,
+            self.model.as_ref(),
         )?;
         let defect = d.defect;
         self.evals.push((lc, defect));
@@ -867,7 +877,9 @@ fn panels_at_edge(
     let mut sensitivity = f64::INFINITY;
     for &n in &ORDERS {
         let fams = Families::new(consts.g, n);
-        let mut solve = |c, w| solve_fixed(consts, c, w, n, &fams, &layout, oversample, &mut ls);
+        let model = prev.as_ref().filter(|_| system::weighs_rows(traction_tol));
+        let mut solve =
+            |c, w| solve_fixed(consts, c, w, n, &fams, &layout, oversample, &mut ls, model);
         let d = solve(c, w).ok()?;
         if n == SENSITIVITY_ORDER {
             let (c2, w2) = edge_of(c.ln() - w.ln() + SENSITIVITY_STEP);
@@ -1099,7 +1111,15 @@ fn panels_from(
 fn first_root(consts: Constants, start: Start, oversample: f64) -> Result<Root> {
     let n = start.order();
     let fams = Families::new(consts.g, n);
-    let mut level = Level::new(consts, n, &fams, SCAN_XTOL, oversample, Default::default());
+    let mut level = Level::new(
+        consts,
+        n,
+        &fams,
+        SCAN_XTOL,
+        oversample,
+        Default::default(),
+        None,
+    );
     let lc = level.root_from(start)?;
     Ok(Root {
         lc,
@@ -1139,17 +1159,22 @@ fn root_at_order(
     // the wrong-c modes left out of the tractions count in their estimate in proportion to
     // the defect left at the root ([`Discrete::wrong_c_norm`]): 5% of the traction tolerance
     // at most (at c = 8.5e-7, the auxetic b* = 1 - 5e-7, mu~ = 10, the tolerance on c alone
-    // left a defect whose modes weighed 5e-8)
-    let per_lc = prev.slope.abs() * prev.discrete.wrong_c_per_defect(tol);
+    // left a defect whose modes weighed 5e-8). Their norm grows as the error in c falls below
+    // the panel at c, so it is taken at no more than the error in c the loosest xtol leaves
+    // (b* = 0.15, mu~ = 1e3, 1 - c = 2e-13: taken at the tolerance on c, 2e-12, it was 0, the
+    // root stayed 2e-4 off in lc, and the modes made 1.9e-10 of the traction estimate)
+    let dc = tol.min(c_prev * w_prev * LOOSEST_XTOL);
+    let per_lc = prev.slope.abs() * prev.discrete.wrong_c_per_defect(dc);
     let xtol = (0.05 * tol / (c_prev * w_prev))
         .min(0.05 * traction_tol / per_lc)
-        .clamp(1e-13, 1e-3);
+        .clamp(1e-13, LOOSEST_XTOL);
     let fams = Families::new(consts.g, n);
-    let mut level = Level::new(consts, n, &fams, xtol, oversample, prev.ls);
+    let model = system::weighs_rows(traction_tol).then(|| prev.discrete.clone());
+    let mut level = Level::new(consts, n, &fams, xtol, oversample, prev.ls, model.clone());
     let (lc, unc) = match level.root_near(prev.lc, prev.slope, prev.step) {
         Ok(r) => r,
         Err(_) => {
-            level = Level::new(consts, n, &fams, xtol, oversample, level.ls);
+            level = Level::new(consts, n, &fams, xtol, oversample, level.ls, model);
             (level.root_from(start)?, xtol)
         }
     };
