@@ -47,11 +47,12 @@
 //!   ([`crate::stick_edge_table`]) where its bound meets the tolerance, with Goodman's
 //!   tractions and their model-error bound.
 //!
-//! Range of the panels: `T_MIN` < lc < `T_MAX`, i.e. c > 2e-35 and 1 - c > 4e-18 (outside
-//! it NoConvergence says so); the number of panels grows like log(1 / min(c, 1 - c)), and
-//! thin slip zones cost seconds (1 - c = 1e-14 at b* = 0.1: ~2000 unknowns). Between the
-//! panels' range and the bonded limit's, i.e. for b* below about 0.12 with 1 - c from about
-//! 1e-21 to 4e-18 at tolerance 1e-10 (1e-17 to 4e-18 at 1e-8), no regime answers yet.
+//! Range of the panels: `T_MIN` < lc < `T_MAX`, i.e. c > 2e-35 and 1 - c > 1e-20, and for
+//! thin slip zones at most `MAX_UNKNOWNS` at the order their tractions need (outside it
+//! NoConvergence says so); the number of panels grows like log(1 / min(c, 1 - c)), and
+//! thin slip zones cost seconds (1 - c = 1e-14 at b* = 0.1: ~2000 unknowns; 1 - c = 1e-19:
+//! 2548 unknowns, 28 s). Between the panels' range and the bonded limit's, i.e. for b* near
+//! 0.1 with 1 - c from about 5e-20 to 1e-21 at tolerance 1e-10, no regime answers yet.
 //! A panel solve is 6-9 cheap order-4 solves, then about two Householder least-squares
 //! solves per order (100-350 unknowns at the last); `cargo run --release --example
 //! coupled_timing` measures the cost.
@@ -75,14 +76,16 @@ use crate::numerics::roots::brent;
 use crate::problem::{Coupling, Profile, StickEdge, validate_tolerance};
 use full_slip::FullSlip;
 use large_friction::{LargeFriction, MU_EXTRAPOLATE};
-use mesh::{Layout, Pt};
+use mesh::{Layout, Mesh, Pt};
 use near_bonded::NearBonded;
 use system::{Constants, Discrete, Families, solve_fixed};
 
 /// The range of lc = ln(c / (1 - c)) the first-root scan covers: c = e^-80 = 1.8e-35 up to
-/// 1 - c = e^-40 = 4.2e-18 (roughly the smallest c and 1 - c the panel layouts resolve).
+/// 1 - c = e^-48 = 1.4e-21 (roughly the smallest c and 1 - c the panel layouts resolve; the
+/// thinnest slip zones within [`MAX_UNKNOWNS`] at the orders 16-19 that 1e-10 takes are near
+/// 1e-19).
 const T_MIN: f64 = -80.0;
-const T_MAX: f64 = 40.0;
+const T_MAX: f64 = 48.0;
 
 /// Range of Goodman's stick edge, in lc, as the start of the scan.
 const GUESS_RANGE: (f64, f64) = (-60.0, 30.0);
@@ -134,6 +137,42 @@ const WINDOW_BELOW: f64 = 1e-6;
 const WINDOW_MARGIN: f64 = 1.0;
 const WINDOW_ORDERS: [usize; 2] = [8, 11];
 
+/// The window's orders where it ends beyond [`THIN_WINDOW`] in lc (1 - c below 4e-18): there
+/// orders 8 and 11 see no sign change (b* = 0.1, mu~ = 10: the defect at lc = 38 .. 47 stays
+/// negative at 8 and 11, while 13 and 16 agree on a root at lc = 43.5).
+const THIN_WINDOW_ORDERS: [usize; 2] = [13, 16];
+const THIN_WINDOW: f64 = 40.0;
+
+/// The order whose traction estimate meets 1e-10 in the thin windows (b* = 0.1, mu~ = 10 and
+/// b* = 0.12, mu~ = 1e4: 19, after the window's 13 and 16).
+const THIN_FINAL_ORDER: usize = 19;
+
+/// The unknowns of the panels at [`THIN_FINAL_ORDER`] for the stick edge at lc (None: no
+/// layout fits).
+fn thin_unknowns(lc: f64) -> Option<usize> {
+    let (c, w) = edge_of(lc);
+    Mesh::new(c, w, THIN_FINAL_ORDER, true, &Layout::for_edge(c, w)).map(|m| m.unknowns)
+}
+
+/// Whether the slip zones the near-bonded window (lo, hi) of lc predicts are beyond the
+/// panels: past [`T_MAX`], or, in a thin window, more than [`MAX_UNKNOWNS`] at
+/// [`THIN_FINAL_ORDER`] (b* = 0.1, mu~ = 21.5 .. 2e3: 2210-2242 unknowns at order 16 and
+/// estimates 8e-5 .. 3e-3 after 47-61 s each, where this now fails at once).
+fn too_thin(lo: f64, hi: f64) -> bool {
+    let mid = 0.5 * (lo + hi);
+    mid > T_MAX - WINDOW_MARGIN - 1.0
+        || (hi > THIN_WINDOW && thin_unknowns(mid).is_none_or(|u| u > MAX_UNKNOWNS))
+}
+
+/// The orders of the window search for a window ending at `hi` in lc.
+fn window_orders(hi: f64) -> [usize; 2] {
+    if hi > THIN_WINDOW {
+        THIN_WINDOW_ORDERS
+    } else {
+        WINDOW_ORDERS
+    }
+}
+
 /// Two successive orders must also agree on the tractions to TRACTION_RATIO times the
 /// tolerance (relative, [`traction_gap`]): near full stick a tolerance on c alone is met at
 /// orders too low for the tractions.
@@ -150,10 +189,10 @@ const TIGHTEST: f64 = 1e-12;
 /// tolerances 1e-4 .. 1e-8 on six scenes of the reduced plane, b* = 0.1 .. 0.7).
 const TRACTION_PER_C: f64 = 50.0;
 
-/// Most unknowns of a panel system: thin slip zones at small b* need many panels, and beyond
-/// this (about 2000, reached at 1 - c ~ 1e-14, b* = 0.1, order 19) one least-squares solve
-/// takes seconds.
-const MAX_UNKNOWNS: usize = 2000;
+/// Most unknowns of a panel system: thin slip zones at small b* need many panels (b* = 0.1,
+/// mu~ = 10, 1 - c = 1.3e-19: 2548 at order 19, the order whose estimate meets 1e-10, 28 s
+/// in all), and one least-squares solve takes seconds there.
+const MAX_UNKNOWNS: usize = 2600;
 
 /// Relative accuracy of small c that [`solve_to`] asks of the panels when the tractions are
 /// wanted: at c = 1e-7 (an auxetic material, mu = 0.1) c to 1e-10 left (E2) off by 2e-6
@@ -962,16 +1001,19 @@ fn panels(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSolution> 
     let lc0 = goodman_guess(consts.bq, consts.mu);
     let scans = search_orders(consts.g, SCAN_ORDERS).map(|order| Start::Scan(lc0, order));
     let starts: Vec<Start> = match window {
-        Some((lo, hi)) if 0.5 * (lo + hi) > T_MAX - WINDOW_MARGIN - 1.0 => {
+        Some((lo, hi)) if too_thin(lo, hi) => {
+            let mid = 0.5 * (lo + hi);
             return Err(Error::NoConvergence(format!(
                 "the slip zones (1 - c ~ {:.0e} by the near-bonded law) are too thin for the \
-                 panels (1 - c above about {:.0e}), and the bonded limit's bounds miss the \
+                 panels (1 - c above about {:.0e}, and at most {MAX_UNKNOWNS} unknowns at \
+                 order {THIN_FINAL_ORDER}: {} there), and the bonded limit's bounds miss the \
                  tolerances",
-                edge_of(0.5 * (lo + hi)).1,
-                edge_of(T_MAX - WINDOW_MARGIN - 1.0).1
+                edge_of(mid).1,
+                edge_of(T_MAX - WINDOW_MARGIN - 1.0).1,
+                thin_unknowns(mid).map_or("no layout".into(), |u| u.to_string())
             )));
         }
-        Some((lo, hi)) => search_orders(consts.g, WINDOW_ORDERS)
+        Some((lo, hi)) => search_orders(consts.g, window_orders(hi))
             .map(|n| Start::Window(lo, hi, n))
             .to_vec(),
         None => scans.to_vec(),
