@@ -461,15 +461,11 @@ fn large_friction_meets_1e_10() {
     }
 }
 
-/// A thin slip zone (b* = 0.15, mu~ = 10, 1 - c = 8.3e-13) to 1e-10 in c and in the
-/// tractions: the rows weighted by the lower order's field (system::row_weight) let the
-/// order-to-order estimate converge (it stalled at 1.2e-10 unweighted, up to order 34). The
-/// solution satisfies (E1) and (E2) by the independent quadrature, its 1 - c lies in the
-/// near-bonded law's window, and the bonded punch's tractions lie within the documented
-/// 3 sqrt(1 - c) of it.
-#[test]
-fn thin_slip_zone_meets_1e_10() {
-    let (b, m) = (0.15, 10.0);
+/// The thin slip zone at (b*, mu~) to 1e-10 in c and in the tractions, checked against the
+/// near-bonded law's window for 1 - c and the bonded punch's tractions, within the documented
+/// 3 sqrt(1 - c) (in x, as [`crate::problem::traction_distance`] works); returns it with
+/// 1 - c and that distance.
+fn thin_slip_zone(b: f64, m: f64) -> (Coupling, CoupledSolution, f64, f64) {
     let k = Coupling {
         bp: b,
         bq: b,
@@ -478,39 +474,6 @@ fn thin_slip_zone_meets_1e_10() {
     let s = solve_to(&k, 1e-10, 1e-10).unwrap();
     assert!(s.numerical_error() <= 1e-10 && s.traction_error() <= 1e-10);
     let w = s.edge().one_minus_c;
-    let (lo, hi) = near_bonded::ln_w_range(b, m).unwrap();
-    assert!(lo <= w.ln() && w.ln() <= hi, "1 - c = {w:e}");
-    let bonded = crate::problem::traction_distance(&s, &NearBonded::new(&k));
-    assert!(bonded <= 3.0 * w.sqrt(), "bonded limit off by {bonded:e}");
-    let worst = check_solution(&k, &s);
-    println!(
-        "b* {b} mu~ {m}: 1 - c = {w:.6e}, traction estimate {:.1e}, bonded limit {bonded:.1e}, \
-         worst residual {worst:.1e}",
-        s.traction_error()
-    );
-}
-
-/// Slip zones thinner than the panels' old range (1 - c < 4e-18, b* = 0.1, mu~ = 4.64): the
-/// window search at orders 13 and 16 (8 and 11 see no sign change there) finds the root, and
-/// order 19 meets 1e-10 within the unknowns allowed. Its 1 - c lies in the near-bonded law's
-/// window and the bonded punch's tractions within 3 sqrt(1 - c) of it (in x, as
-/// [`crate::problem::traction_distance`] works: that sees the bulk, not the layer, whose
-/// share of the load is ~ sqrt(1 - c) = 2e-9); [`check_solution`]'s quadratures work in x
-/// too, which does not resolve 1 - c below 1e-16 (c rounds to 1), so the residuals are not
-/// checked here. Slightly thinner zones (mu~ = 1e3, 1 - c ~ 1e-20) would
-/// need more unknowns at order 19 than the panels take and are refused at once.
-#[test]
-fn thinner_slip_zone_meets_1e_10() {
-    let (b, m) = (0.1, 4.64);
-    let k = Coupling {
-        bp: b,
-        bq: b,
-        mu: m,
-    };
-    let s = solve_to(&k, 1e-10, 1e-10).unwrap();
-    assert!(s.numerical_error() <= 1e-10 && s.traction_error() <= 1e-10);
-    let w = s.edge().one_minus_c;
-    assert!(w < 4e-18, "1 - c = {w:e}");
     let (lo, hi) = near_bonded::ln_w_range(b, m).unwrap();
     assert!(lo <= w.ln() && w.ln() <= hi, "1 - c = {w:e}");
     let bonded = crate::problem::traction_distance(&s, &NearBonded::new(&k));
@@ -522,11 +485,34 @@ fn thinner_slip_zone_meets_1e_10() {
         s.unknowns(),
         s.traction_error()
     );
-    let k = Coupling {
-        bp: b,
-        bq: b,
-        mu: 1e3,
-    };
+    (k, s, w, bonded)
+}
+
+/// A thin slip zone (b* = 0.15, mu~ = 10, 1 - c = 8.3e-13) to 1e-10 in c and in the
+/// tractions ([`thin_slip_zone`]): the rows weighted by the lower order's field
+/// (system::row_weight) let the order-to-order estimate converge (it stalled at 1.2e-10
+/// unweighted, up to order 34). The solution satisfies (E1) and (E2) by the independent
+/// quadrature.
+#[test]
+fn thin_slip_zone_meets_1e_10() {
+    let (k, s, _, _) = thin_slip_zone(0.15, 10.0);
+    let worst = check_solution(&k, &s);
+    println!("worst residual {worst:.1e}");
+}
+
+/// Slip zones thinner than the panels' old range (1 - c < 4e-18, b* = 0.1, mu~ = 4.64): the
+/// window search at orders 13 and 16 (8 and 11 see no sign change there) finds the root, and
+/// order 19 meets 1e-10 within the unknowns allowed ([`thin_slip_zone`]; the distance to the
+/// bonded tractions, in x, sees the bulk, not the layer, whose share of the load is
+/// ~ sqrt(1 - c) = 2e-9). [`check_solution`]'s quadratures work in x too, which does not
+/// resolve 1 - c below 1e-16 (c rounds to 1), so the residuals are not checked here.
+/// Slightly thinner zones (mu~ = 1e3, 1 - c ~ 1e-20) would need more unknowns at order 19
+/// than the panels take and are refused at once.
+#[test]
+fn thinner_slip_zone_meets_1e_10() {
+    let (k, _, w, _) = thin_slip_zone(0.1, 4.64);
+    assert!(w < 4e-18, "1 - c = {w:e}");
+    let k = Coupling { mu: 1e3, ..k };
     match solve_to(&k, 1e-10, 1e-10) {
         Err(Error::NoConvergence(why)) => assert!(why.contains("at most 2600 unknowns"), "{why}"),
         other => panic!("{other:?}"),
