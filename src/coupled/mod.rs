@@ -916,7 +916,9 @@ fn panels_at_edge(
     let mut sensitivity = f64::INFINITY;
     for &n in &ORDERS {
         let fams = Families::new(consts.g, n);
-        let model = prev.as_ref().filter(|_| system::weighs_rows(traction_tol));
+        let model = prev
+            .as_ref()
+            .filter(|_| system::weighs_rows(w, traction_tol));
         let mut solve =
             |c, w| solve_fixed(consts, c, w, n, &fams, &layout, oversample, &mut ls, model);
         let d = solve(c, w).ok()?;
@@ -1211,7 +1213,7 @@ fn root_at_order(
         .min(0.05 * traction_tol / per_lc)
         .clamp(1e-13, LOOSEST_XTOL);
     let fams = Families::new(consts.g, n);
-    let model = system::weighs_rows(traction_tol).then(|| prev.discrete.clone());
+    let model = system::weighs_rows(w_prev, traction_tol).then(|| prev.discrete.clone());
     let mut level = Level::new(consts, n, &fams, xtol, oversample, prev.ls, model.clone());
     let (lc, unc) = match level.root_near(prev.lc, prev.slope, prev.step) {
         Ok(r) => r,

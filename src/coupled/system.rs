@@ -324,22 +324,25 @@ impl Columns {
 /// int p = 1; the floor only guards a model's zeros).
 const FIELD_FLOOR: f64 = 1e-3;
 
-/// Slip zones thinner than this (1 - c) get the weighted rows of [`row_weight`]; wider ones
-/// keep the rows as they are, which met their tolerances there before (weighted, c moved by
-/// up to 5e-12 at b* = 0.005, mu~ = 2e-3 .. 5e-3, and two scenes with strong singularities,
-/// c ~ 1e-4 at b* = 0.99995, and b* = 0.99 at mu~ = 215, missed 1e-10 in the tractions).
+/// Slip zones thinner than this (1 - c) get the weighted rows of [`row_weight`]
+/// ([`weighs_rows`]); wider ones keep the rows as they are, which met their tolerances there
+/// before (weighted, c moved by up to 5e-12 at b* = 0.005, mu~ = 2e-3 .. 5e-3, and two scenes
+/// with strong singularities, c ~ 1e-4 at b* = 0.99995, and b* = 0.99 at mu~ = 215, missed
+/// 1e-10 in the tractions).
 const WEIGHTED_BELOW: f64 = 1e-6;
 
 /// Traction tolerances below which the rows are weighted ([`weighs_rows`]).
 const WEIGHTED_TRACTIONS: f64 = 1e-9;
 
-/// Whether the solves for traction tolerance `traction_tol` take a model for their row
-/// weights ([`row_weight`]): only below [`WEIGHTED_TRACTIONS`]. The unweighted rows' noise
-/// (up to 1e-10 at 1 - c = 1e-12) lies far below coarser tolerances, and weighting the rows
-/// slows the convergence of c, which the rows next to c decide (b* = 0.2, mu~ = 5,
-/// 1 - c = 8e-9: c and tractions to 1e-8 in 516 ms weighted, 230 ms not).
-pub(crate) fn weighs_rows(traction_tol: f64) -> bool {
-    traction_tol < WEIGHTED_TRACTIONS
+/// Whether the solves near stick edge 1 - c = w for traction tolerance `traction_tol` take a
+/// model for their row weights ([`row_weight`]): slip zones thinner than [`WEIGHTED_BELOW`]
+/// and tolerances below [`WEIGHTED_TRACTIONS`]. The unweighted rows' noise (up to 1e-10 at
+/// 1 - c = 1e-12) lies far below coarser tolerances, and weighting the rows slows the
+/// convergence of c, which the rows next to c decide (b* = 0.2, mu~ = 5, 1 - c = 8e-9: c and
+/// tractions to 1e-8 in 516 ms weighted, 230 ms not). Decided once per order (from the lower
+/// order's stick edge), so that defect(c) at one order stays smooth.
+pub(crate) fn weighs_rows(w: f64, traction_tol: f64) -> bool {
+    w < WEIGHTED_BELOW && traction_tol < WEIGHTED_TRACTIONS
 }
 
 /// The weight of the collocation row at x, besides its scaling to a largest entry of 1:
@@ -367,8 +370,8 @@ fn row_weight(model: Option<&Discrete>, x: Pt) -> f64 {
 
 /// Assembles and solves the system for stick edge (c, w = 1 - c) at order n, with
 /// `oversample` collocation points per unknown, by `ls`. Each row is scaled to its largest
-/// entry and, given a `model` of the solution (a lower order's) and a slip zone thinner than
-/// [`WEIGHTED_BELOW`], weighted by the model's field at its point ([`row_weight`]).
+/// entry and, given a `model` of the solution (a lower order's, where [`weighs_rows`]),
+/// weighted by the model's field at its point ([`row_weight`]).
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn solve_fixed(
     k: Constants,
@@ -399,7 +402,6 @@ pub(crate) fn solve_fixed(
         vec![0.0; deg],
         vec![0.0; deg],
     );
-    let model = model.filter(|_| w < WEIGHTED_BELOW);
     let map = Columns::new(&mesh, k);
     let columns = map.count();
     // row-major; each row assembled in `r` (all unknowns), then folded into its place
