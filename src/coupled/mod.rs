@@ -47,12 +47,13 @@
 //!   ([`crate::stick_edge_table`]) where its bound meets the tolerance, with Goodman's
 //!   tractions and their model-error bound.
 //!
-//! Range of the panels: `T_MIN` < lc < `T_MAX`, i.e. c > 2e-35 and 1 - c > 1e-20, and for
+//! Range of the panels: `T_MIN` < lc < `T_MAX`, i.e. c > 2e-35 and 1 - c > 2.6e-23, and for
 //! thin slip zones at most `MAX_UNKNOWNS` at the order their tractions need (outside it
 //! NoConvergence says so); the number of panels grows like log(1 / min(c, 1 - c)), and
-//! thin slip zones cost seconds (1 - c = 1e-14 at b* = 0.1: ~2000 unknowns; 1 - c = 1e-19:
-//! 2548 unknowns, 28 s). Between the panels' range and the bonded limit's, i.e. for b* near
-//! 0.1 with 1 - c from about 5e-20 to 1e-21 at tolerance 1e-10, no regime answers yet.
+//! thin slip zones cost seconds to a minute (1 - c = 1e-14 at b* = 0.1: ~2000 unknowns;
+//! 1 - c = 1.3e-19: 2548 unknowns, 28 s; 1 - c = 3.2e-21: 2738 unknowns, 44 s). The bonded
+//! limit takes over where its bound meets the tolerances (1 - c below 1.1e-21 at 1e-10), so
+//! the two leave no gap at tolerances from 1e-10 up.
 //! A panel solve is 6-9 cheap order-4 solves, then about two Householder least-squares
 //! solves per order (100-350 unknowns at the last); `cargo run --release --example
 //! coupled_timing` measures the cost.
@@ -81,11 +82,10 @@ use near_bonded::NearBonded;
 use system::{Constants, Discrete, Families, solve_fixed};
 
 /// The range of lc = ln(c / (1 - c)) the first-root scan covers: c = e^-80 = 1.8e-35 up to
-/// 1 - c = e^-48 = 1.4e-21 (roughly the smallest c and 1 - c the panel layouts resolve; the
-/// thinnest slip zones within [`MAX_UNKNOWNS`] at the orders 16-19 that 1e-10 takes are near
-/// 1e-19).
+/// 1 - c = e^-52 = 2.6e-23 (roughly the smallest c and 1 - c the panel layouts resolve, and
+/// below the 1 - c = 1.1e-21 from which the bonded limit meets 1e-10).
 const T_MIN: f64 = -80.0;
-const T_MAX: f64 = 48.0;
+const T_MAX: f64 = 52.0;
 
 /// Range of Goodman's stick edge, in lc, as the start of the scan.
 const GUESS_RANGE: (f64, f64) = (-60.0, 30.0);
@@ -113,9 +113,15 @@ const SCAN_ORDERS: [usize; 2] = [4, 8];
 const SMALL_G: f64 = 1e-3;
 const SMALL_G_ORDERS: [usize; 2] = [11, 13];
 
-/// The orders the first root is sought at: `orders`, or [`SMALL_G_ORDERS`] at large friction.
+/// The orders the first root is sought at: `orders`, at large friction raised to at least
+/// [`SMALL_G_ORDERS`] (the thin windows' own orders are higher still: at b* = 0.1, mu~ = 1e4,
+/// 11 and 13 see no sign change where 13 and 16 find the root).
 fn search_orders(g: f64, orders: [usize; 2]) -> [usize; 2] {
-    if g < SMALL_G { SMALL_G_ORDERS } else { orders }
+    if g < SMALL_G {
+        [0, 1].map(|i| orders[i].max(SMALL_G_ORDERS[i]))
+    } else {
+        orders
+    }
 }
 
 /// Where the scan is redone from when its root came out inadmissible: the start below
@@ -155,14 +161,20 @@ fn thin_unknowns(lc: f64) -> Option<usize> {
 }
 
 /// Whether the slip zones the near-bonded window (lo, hi) of lc predicts are beyond the
-/// panels: past [`T_MAX`], or, in a thin window, more than [`MAX_UNKNOWNS`] at
-/// [`THIN_FINAL_ORDER`] (b* = 0.1, mu~ = 21.5 .. 2e3: 2210-2242 unknowns at order 16 and
-/// estimates 8e-5 .. 3e-3 after 47-61 s each, where this now fails at once).
-fn too_thin(lo: f64, hi: f64) -> bool {
+/// panels: past [`T_MAX`], at large friction (g < [`SMALL_G`]) past [`SMALL_G_T_MAX`], or, in
+/// a thin window, more than [`MAX_UNKNOWNS`] at [`THIN_FINAL_ORDER`].
+fn too_thin(lo: f64, hi: f64, g: f64) -> bool {
     let mid = 0.5 * (lo + hi);
     mid > T_MAX - WINDOW_MARGIN - 1.0
+        || (g < SMALL_G && mid > SMALL_G_T_MAX)
         || (hi > THIN_WINDOW && thin_unknowns(mid).is_none_or(|u| u > MAX_UNKNOWNS))
 }
+
+/// At large friction the window search is unreliable in the thinnest zones, beyond this lc
+/// (1 - c = 2.9e-20): at b* = 0.1 (window mid 45.9) it met 1e-10 at mu~ = 1e4 only at order
+/// 22 (3082 unknowns) after 4 min, and at mu~ = 1e5 the layouts disagreed on the defect's
+/// sign after 65 s; there the panels fail at once.
+const SMALL_G_T_MAX: f64 = 45.0;
 
 /// The orders of the window search for a window ending at `hi` in lc.
 fn window_orders(hi: f64) -> [usize; 2] {
@@ -189,10 +201,12 @@ const TIGHTEST: f64 = 1e-12;
 /// tolerances 1e-4 .. 1e-8 on six scenes of the reduced plane, b* = 0.1 .. 0.7).
 const TRACTION_PER_C: f64 = 50.0;
 
-/// Most unknowns of a panel system: thin slip zones at small b* need many panels (b* = 0.1,
-/// mu~ = 10, 1 - c = 1.3e-19: 2548 at order 19, the order whose estimate meets 1e-10, 28 s
-/// in all), and one least-squares solve takes seconds there.
-const MAX_UNKNOWNS: usize = 2600;
+/// Most unknowns of a panel system: thin slip zones at small b* need many panels (at order 19,
+/// the order whose estimate meets 1e-10: b* = 0.1, mu~ = 10, 1 - c = 1.3e-19, 2548 unknowns,
+/// 28 s in all; b* = 0.05, mu~ = 1, 1 - c = 3.2e-21, 2738, 44 s), and one least-squares solve
+/// takes seconds there. The thinnest zones the bonded limit leaves at 1e-10 (1.1e-21) need
+/// about 2800.
+const MAX_UNKNOWNS: usize = 3200;
 
 /// Relative accuracy of small c that [`solve_to`] asks of the panels when the tractions are
 /// wanted: at c = 1e-7 (an auxetic material, mu = 0.1) c to 1e-10 left (E2) off by 2e-6
@@ -1003,15 +1017,16 @@ fn panels(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSolution> 
     let lc0 = goodman_guess(consts.bq, consts.mu);
     let scans = search_orders(consts.g, SCAN_ORDERS).map(|order| Start::Scan(lc0, order));
     let starts: Vec<Start> = match window {
-        Some((lo, hi)) if too_thin(lo, hi) => {
+        Some((lo, hi)) if too_thin(lo, hi, consts.g) => {
             let mid = 0.5 * (lo + hi);
             return Err(Error::NoConvergence(format!(
                 "the slip zones (1 - c ~ {:.0e} by the near-bonded law) are too thin for the \
-                 panels (1 - c above about {:.0e}, and at most {MAX_UNKNOWNS} unknowns at \
-                 order {THIN_FINAL_ORDER}: {} there), and the bonded limit's bounds miss the \
-                 tolerances",
+                 panels (1 - c above about {:.0e}, {:.0e} at large friction, and at most \
+                 {MAX_UNKNOWNS} unknowns at order {THIN_FINAL_ORDER}: {} there), and the \
+                 bonded limit's bounds miss the tolerances",
                 edge_of(mid).1,
                 edge_of(T_MAX - WINDOW_MARGIN - 1.0).1,
+                edge_of(SMALL_G_T_MAX).1,
                 thin_unknowns(mid).map_or("no layout".into(), |u| u.to_string())
             )));
         }
