@@ -53,7 +53,9 @@
 //! thin slip zones cost seconds to a minute (1 - c = 1e-14 at b* = 0.1: ~2000 unknowns;
 //! 1 - c = 1.3e-19: 2548 unknowns, 28 s; 1 - c = 3.2e-21: 2738 unknowns, 44 s). The bonded
 //! limit takes over where its bound meets the tolerances (1 - c below 1.1e-21 at 1e-10), so
-//! the two leave no gap at tolerances from 1e-10 up.
+//! at moderate friction the two leave no gap at tolerances from 1e-10 up; at large friction
+//! (g < 1e-3) the panels stop at 1 - c = 2.9e-20 (`SMALL_G_T_MAX`), which leaves b* ~ 0.1
+//! there without an answer at tolerances below about 4e-10 (3 sqrt(1 - c) at 1 - c = 1.4e-20).
 //! A panel solve is 6-9 cheap order-4 solves, then about two Householder least-squares
 //! solves per order (100-350 unknowns at the last); `cargo run --release --example
 //! coupled_timing` measures the cost.
