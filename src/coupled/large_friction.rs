@@ -5,11 +5,19 @@
 //! c(1e8) - c(1e6) = 3.1331e-7 and c(1e10) - c(1e8) = 3.133e-9, a ratio of 100 to four
 //! digits. The panels themselves lose the defect's sign beyond mu~ ~ 1e8 (g < 3e-9), so
 //! above [`MU_EXTRAPOLATE`] the solution is the quadratic in 1/mu~ through the panels'
-//! solutions at [`M`], 2 M and 4 M, evaluated at 1/mu~ (Lagrange weights, which add up to 1),
-//! each solution taken in coordinates relative to its own stick edge (x c_i / c on the stick
-//! zone, 1 - (1 - x) (1 - c_i) / (1 - c) on the slip zones), with p = q / mu~ on the slip
-//! zones. Its model error is the distance from the line through 2 M and 4 M (the quadratic's
-//! correction, a bound on its own error, which is of the next order in 1/M).
+//! solutions at M, 2 M and 4 M ([`M`]), evaluated at 1/mu~ (Lagrange weights, which add up
+//! to 1), each solution taken in coordinates relative to its own stick edge (x c_i / c on the
+//! stick zone, 1 - (1 - x) (1 - c_i) / (1 - c) on the slip zones), with p = q / mu~ on the
+//! slip zones. Its model error is the distance from the line through 2 M and 4 M (the
+//! quadratic's correction, a bound on its own error, which is of the next order in 1/M).
+//!
+//! Thin slip zones (1 - c below about 1e-15, b* <~ 0.13) lose the panels' root search much
+//! earlier, once g < 1e-3 (b* = 0.1: mu~ >= 4.6e3, 1 - c ~ 1.4e-20; b* = 0.12: mu~ >= 2e5).
+//! There the same extrapolation runs from [`thin_base`], whose 4 M has g = [`THIN_NODE_G`].
+//! Its error stays small although 1/M is not: the tractions outside the slip layer are the
+//! bonded punch's whatever mu~ (`near_bonded`), and 1 - c = 8 exp(-kappa arctan(mu~) / eps)
+//! moves by a few per cent from 4 M to infinity (b* = 0.1: 1.4159e-20 at mu~ = 1e3,
+//! 1.3934e-20 at 1e6).
 
 use super::{CoupledSolution, panels};
 use crate::error::Result;
@@ -21,7 +29,23 @@ use crate::problem::{Coupling, Profile, StickEdge, traction_parts};
 pub(crate) const MU_EXTRAPOLATE: f64 = 1e7;
 
 /// The lowest reduced friction the panels are solved at (then 2 M and 4 M).
-const M: f64 = 1e6;
+pub(crate) const M: f64 = 1e6;
+
+/// Thin slip zones: the edge exponent g at the highest node 4 M of [`thin_base`]; the thin
+/// windows' root search is reliable from g ~ 1e-3 up (b* = 0.1 solved at mu~ = 2.2e3, g =
+/// 1.5e-3).
+const THIN_NODE_G: f64 = 1.5e-3;
+
+/// The lowest node M for thin slip zones at b*: 4 M is where g = arctan(1 / (b* 4 M)) / pi
+/// equals [`THIN_NODE_G`] (b* = 0.1: M = 530; b* = 0.12: 442).
+pub(crate) fn thin_base(b: f64) -> f64 {
+    0.25 / (b * (std::f64::consts::PI * THIN_NODE_G).tan())
+}
+
+/// The reduced frictions the panels are solved at: M, 2 M, 4 M.
+pub(crate) fn nodes(m: f64) -> [f64; 3] {
+    [m, 2.0 * m, 4.0 * m]
+}
 
 /// Share of the tolerances asked of each panel solution (the weights add up, in absolute
 /// value, to at most 5 at mu~ = infinity).
@@ -35,7 +59,7 @@ pub(crate) struct LargeFriction {
     delta: f64,
     /// The reduced friction mu~.
     mu: f64,
-    /// The panels' solutions of the reduced problem at M, 2 M, 4 M.
+    /// The panels' solutions of the reduced problem at [`nodes`].
     sols: Vec<CoupledSolution>,
     /// Lagrange weights in 1/mu~ at 1/mu~ of the quadratic (`quad`) and of the line through
     /// 2 M and 4 M (`line`).
@@ -61,19 +85,17 @@ fn lagrange(y: f64, nodes: [Option<f64>; 3]) -> [f64; 3] {
     w
 }
 
-/// The frictions whose stick edges are extrapolated: M, 2 M, 4 M.
-pub(crate) const FRICTIONS: [f64; 3] = [M, 2.0 * M, 4.0 * M];
-
-/// The stick edge at reduced friction `mu` extrapolated from the `edges` at [`FRICTIONS`]
+/// The stick edge at reduced friction `mu` extrapolated from the `edges` at [`nodes`]`(m)`
 /// (their errors `errors`): the edge, its error (the errors times the weights' magnitudes,
 /// plus the distance from the line through 2 M and 4 M) and the Lagrange weights of the
 /// quadratic and of the line.
 pub(crate) fn extrapolate_edge(
     mu: f64,
+    m: f64,
     edges: [StickEdge; 3],
     errors: [f64; 3],
 ) -> (StickEdge, f64, [[f64; 3]; 2]) {
-    let y = FRICTIONS.map(|m| Some(1.0 / m));
+    let y = nodes(m).map(|m| Some(1.0 / m));
     let quad = lagrange(1.0 / mu, y);
     let line = lagrange(1.0 / mu, [None, y[1], y[2]]);
     let combine = |weights: [f64; 3], f: fn(&StickEdge) -> f64| -> f64 {
@@ -91,12 +113,12 @@ pub(crate) fn extrapolate_edge(
 }
 
 impl LargeFriction {
-    /// The extrapolated solution of `k` (bp > 0, mu~ >= [`MU_EXTRAPOLATE`]) to tolerances
-    /// `tol` on c and `traction_tol` on the tractions (what the panels reach is reported in
-    /// the estimates; the caller compares).
-    pub(crate) fn new(k: &Coupling, tol: f64, traction_tol: f64) -> Result<Self> {
+    /// The solution of `k` (bp > 0, mu~ > 4 `m`) extrapolated from the nodes `m`, 2 `m`,
+    /// 4 `m` to tolerances `tol` on c and `traction_tol` on the tractions (what the panels
+    /// reach is reported in the estimates; the caller compares).
+    pub(crate) fn new(k: &Coupling, m: f64, tol: f64, traction_tol: f64) -> Result<Self> {
         let (r, delta) = k.reduced();
-        let sols = FRICTIONS
+        let sols = nodes(m)
             .iter()
             .map(|&mu| {
                 let at = Coupling { mu, ..r };
@@ -105,6 +127,7 @@ impl LargeFriction {
             .collect::<Result<Vec<_>>>()?;
         let (edge, error, [quad, line]) = extrapolate_edge(
             r.mu,
+            m,
             [0, 1, 2].map(|i| sols[i].edge),
             [0, 1, 2].map(|i| sols[i].error),
         );
@@ -137,18 +160,25 @@ impl LargeFriction {
         Ok(s)
     }
 
-    /// (p, q) at 0 <= x < 1 of the combination with `weights` (its own stick edge).
+    /// (p, q) at 0 <= x < 1 of the combination with `weights` (its own stick edge). Next to
+    /// x = 1 the points are placed by u = 1 - x: in thin slip zones c and the c_i
+    /// round to 1, and the combinations' c, off by a few ulps of 1, would move x c_i / c by
+    /// several layer widths (u_i = (c_i u + w_i - w) / c there instead).
     fn tractions(&self, weights: [f64; 3], x: f64) -> (f64, f64) {
         let pairs = || weights.iter().zip(&self.sols);
         let c: f64 = pairs().map(|(a, s)| a * s.edge.c).sum();
         let w: f64 = pairs().map(|(a, s)| a * s.edge.one_minus_c).sum();
-        let stick = x < c;
+        let u = 1.0 - x;
+        let stick = if x < 0.5 { x < c } else { u > w };
         let (mut p, mut q) = (0.0, 0.0);
         for (a, s) in pairs() {
-            let xi = if stick {
-                x * s.edge.c / c
+            let (ci, wi) = (s.edge.c, s.edge.one_minus_c);
+            let xi = if !stick {
+                1.0 - u * wi / w
+            } else if x < 0.5 {
+                x * ci / c
             } else {
-                1.0 - (1.0 - x) * s.edge.one_minus_c / w
+                1.0 - (ci * u + (wi - w)) / c
             };
             let (pi, qi) = s.half_line_tractions(xi);
             (p, q) = (p + a * pi, q + a * qi);
@@ -224,39 +254,57 @@ mod tests {
     use crate::coupled::{Regime, solve_to};
     use crate::problem::traction_distance;
 
-    /// Continuity at the switch: just above MU_EXTRAPOLATE the extrapolation, just below it
-    /// the panels solved at mu~ itself (a different computation: one solve instead of three
+    /// Continuity at a switch mu~ = `at`: just below it the panels solved at mu~ itself,
+    /// just above it the extrapolation (a different computation: one solve instead of three
     /// and no extrapolation) agree on c and on the tractions within their estimates.
+    fn continuous_at(b: f64, at: f64) {
+        let below = Coupling {
+            bp: b,
+            bq: b,
+            mu: at * (1.0 - 1e-12),
+        };
+        let above = Coupling {
+            mu: at * (1.0 + 1e-12),
+            ..below
+        };
+        let p = solve_to(&below, 1e-10, 1e-10).unwrap();
+        let l = solve_to(&above, 1e-10, 1e-10).unwrap();
+        assert!(matches!(p.regime, Regime::Panels(_)));
+        assert!(matches!(l.regime, Regime::LargeFriction(_)));
+        let dc = (p.edge().c - l.edge().c).abs();
+        let dw = (p.edge().one_minus_c - l.edge().one_minus_c).abs();
+        let dt = traction_distance(&p, &l);
+        println!(
+            "b* {b}: 1 - c {:.6e} vs {:.6e}, |dc| {dw:.1e} (estimates {:.1e} + {:.1e}), \
+             traction distance {dt:.1e} (estimates {:.1e} + {:.1e})",
+            p.edge().one_minus_c,
+            l.edge().one_minus_c,
+            p.numerical_error(),
+            l.numerical_error(),
+            p.traction_error(),
+            l.traction_error()
+        );
+        assert!(dc.min(dw) <= p.numerical_error() + l.numerical_error());
+        assert!(dt <= p.traction_error() + l.traction_error());
+    }
+
+    /// Continuity at MU_EXTRAPOLATE.
     #[test]
     fn extrapolation_continues_the_panels() {
         for b in [0.6, 0.95] {
-            let below = Coupling {
-                bp: b,
-                bq: b,
-                mu: MU_EXTRAPOLATE * (1.0 - 1e-12),
-            };
-            let above = Coupling {
-                mu: MU_EXTRAPOLATE,
-                ..below
-            };
-            let p = solve_to(&below, 1e-10, 1e-10).unwrap();
-            let l = solve_to(&above, 1e-10, 1e-10).unwrap();
-            assert!(matches!(p.regime, Regime::Panels(_)));
-            assert!(matches!(l.regime, Regime::LargeFriction(_)));
-            let dc = (p.edge().c - l.edge().c).abs();
-            let dt = traction_distance(&p, &l);
-            println!(
-                "b* {b}: c {:.13} vs {:.13}, |dc| {dc:.1e} (estimates {:.1e} + {:.1e}), traction distance {dt:.1e} (estimates {:.1e} + {:.1e})",
-                p.edge().c,
-                l.edge().c,
-                p.numerical_error(),
-                l.numerical_error(),
-                p.traction_error(),
-                l.traction_error()
-            );
-            assert!(dc <= p.numerical_error() + l.numerical_error());
-            assert!(dt <= p.traction_error() + l.traction_error());
+            continuous_at(b, MU_EXTRAPOLATE);
         }
+    }
+
+    /// Continuity where thin slip zones switch to the extrapolation from [`thin_base`]: g =
+    /// SMALL_G at b* = 0.12 (mu~ = 2.65e3, 1 - c = 5.4e-17, nodes 442 .. 1768).
+    #[test]
+    fn thin_extrapolation_continues_the_panels() {
+        let b = 0.12;
+        continuous_at(
+            b,
+            1.0 / (b * (std::f64::consts::PI * crate::coupled::SMALL_G).tan()),
+        );
     }
 
     /// Far beyond the panels' reach (mu~ = 1e12 and 1e100): (E1), (E2), the mass, Coulomb

@@ -42,7 +42,8 @@
 //! - slip zones below the tolerance (small b*): the bonded punch with the law
 //!   ln((1 - c) / 8) = -kappa arctan(mu~) / eps ([`near_bonded`]);
 //! - mu~ >= 1e7, beyond the panels' reach: the quadratic in 1/mu~ through the panels'
-//!   solutions at mu~ = 1e6, 2e6, 4e6 ([`large_friction`]);
+//!   solutions at mu~ = 1e6, 2e6, 4e6 ([`large_friction`]); in thin slip zones (1 - c below
+//!   about 1e-15) from g < 1e-3 on, through lower frictions (b* = 0.1: 530, 1061, 2122);
 //! - c alone (traction tolerance +infinity, [`solve_to`]): the tabulated stick edge
 //!   ([`crate::stick_edge_table`]) where its bound meets the tolerance, with Goodman's
 //!   tractions and their model-error bound.
@@ -53,9 +54,9 @@
 //! thin slip zones cost seconds to a minute (1 - c = 1e-14 at b* = 0.1: ~2000 unknowns;
 //! 1 - c = 1.3e-19: 2548 unknowns, 28 s; 1 - c = 3.2e-21: 2738 unknowns, 44 s). The bonded
 //! limit takes over where its bound meets the tolerances (1 - c below 1.1e-21 at 1e-10), so
-//! at moderate friction the two leave no gap at tolerances from 1e-10 up; at large friction
-//! (g < 1e-3) the panels stop at 1 - c = 2.9e-20 (`SMALL_G_T_MAX`), which leaves b* ~ 0.1
-//! there without an answer at tolerances below about 4e-10 (3 sqrt(1 - c) at 1 - c = 1.4e-20).
+//! the two leave no gap at tolerances from 1e-10 up; at large friction (g < 1e-3) thin slip
+//! zones (1 - c below about 1e-15) are extrapolated in 1/mu~ from the panels at lower
+//! friction ([`large_friction`]).
 //! A panel solve is 6-9 cheap order-4 solves, then about two Householder least-squares
 //! solves per order (100-350 unknowns at the last); `cargo run --release --example
 //! coupled_timing` measures the cost.
@@ -163,20 +164,13 @@ fn thin_unknowns(lc: f64) -> Option<usize> {
 }
 
 /// Whether the slip zones the near-bonded window (lo, hi) of lc predicts are beyond the
-/// panels: past [`T_MAX`], at large friction (g < [`SMALL_G`]) past [`SMALL_G_T_MAX`], or, in
-/// a thin window, more than [`MAX_UNKNOWNS`] at [`THIN_FINAL_ORDER`].
-fn too_thin(lo: f64, hi: f64, g: f64) -> bool {
+/// panels: past [`T_MAX`], or, in a thin window, more than [`MAX_UNKNOWNS`] at
+/// [`THIN_FINAL_ORDER`].
+fn too_thin(lo: f64, hi: f64) -> bool {
     let mid = 0.5 * (lo + hi);
     mid > T_MAX - WINDOW_MARGIN - 1.0
-        || (g < SMALL_G && mid > SMALL_G_T_MAX)
         || (hi > THIN_WINDOW && thin_unknowns(mid).is_none_or(|u| u > MAX_UNKNOWNS))
 }
-
-/// At large friction the window search is unreliable in the thinnest zones, beyond this lc
-/// (1 - c = 2.9e-20): at b* = 0.1 (window mid 45.9) it met 1e-10 at mu~ = 1e4 only at order
-/// 22 (3082 unknowns) after 4 min, and at mu~ = 1e5 the layouts disagreed on the defect's
-/// sign after 65 s; there the panels fail at once.
-const SMALL_G_T_MAX: f64 = 45.0;
 
 /// The orders of the window search for a window ending at `hi` in lc.
 fn window_orders(hi: f64) -> [usize; 2] {
@@ -869,10 +863,11 @@ fn table_edge(k: &Coupling) -> Option<(StickEdge, f64)> {
             .map(|(lc, bound)| (StickEdge::from_logit(lc), bound))
     };
     if r.mu >= MU_EXTRAPOLATE {
-        let [e0, e1, e2] = large_friction::FRICTIONS.map(at);
+        let m = large_friction::M;
+        let [e0, e1, e2] = large_friction::nodes(m).map(at);
         let (e0, e1, e2) = (e0?, e1?, e2?);
         let (edge, error, _) =
-            large_friction::extrapolate_edge(r.mu, [e0.0, e1.0, e2.0], [e0.1, e1.1, e2.1]);
+            large_friction::extrapolate_edge(r.mu, m, [e0.0, e1.0, e2.0], [e0.1, e1.1, e2.1]);
         Some((edge, error))
     } else {
         at(r.mu)
@@ -973,11 +968,18 @@ fn panels_at_edge(
     None
 }
 
-/// The panels ([`panels`]), or beyond [`MU_EXTRAPOLATE`] their extrapolation in 1/mu~
-/// ([`large_friction`]).
+/// The panels ([`panels`]), or their extrapolation in 1/mu~ ([`large_friction`]) beyond
+/// [`MU_EXTRAPOLATE`] and in thin slip zones at large friction ([`thin_extrapolation`]).
 fn panel_regimes(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSolution> {
-    if k.bp > 0.0 && k.reduced().0.mu >= MU_EXTRAPOLATE {
-        let l = LargeFriction::new(k, tol, traction_tol)?;
+    let base = (k.bp > 0.0).then(|| k.reduced().0).and_then(|r| {
+        if r.mu >= MU_EXTRAPOLATE {
+            Some(large_friction::M)
+        } else {
+            thin_extrapolation(&r)
+        }
+    });
+    if let Some(m) = base {
+        let l = LargeFriction::new(k, m, tol, traction_tol)?;
         let order = l.order();
         let mut s = CoupledSolution::from_profile(l, |l| Regime::LargeFriction(Box::new(l)));
         s.order = order;
@@ -985,6 +987,21 @@ fn panel_regimes(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSol
     }
     panels(k, tol, traction_tol)
 }
+
+/// Thin slip zones at large friction: where the near-bonded law's window lies beyond
+/// [`THIN_EXTRAPOLATE`] in lc and g < [`SMALL_G`], the panels' root search is unreliable (b*
+/// = 0.1, mu~ = 1e4: order 22 and 4 min, or no answer; b* = 0.12, mu~ = 2e5: the layouts
+/// disagree on the defect's sign); the lowest node of the extrapolation from below
+/// ([`large_friction::thin_base`]) there.
+fn thin_extrapolation(r: &Coupling) -> Option<f64> {
+    let (lo, hi) = near_bonded::ln_w_range(r.bp, r.mu)?;
+    (r.edge_exponent() < SMALL_G && -0.5 * (lo + hi) > THIN_EXTRAPOLATE)
+        .then(|| large_friction::thin_base(r.bp))
+}
+
+/// The lc = ln(c / (1 - c)) of the near-bonded window's centre beyond which thin slip zones
+/// at large friction are extrapolated (1 - c = 1.7e-15; b* = 0.12 at large friction: 36.6).
+const THIN_EXTRAPOLATE: f64 = 34.0;
 
 /// The system's constants of the reduced coupling (bp = bq = b*, mu~; `k` itself when
 /// bp = 0) and delta (q = delta q~).
@@ -1019,16 +1036,15 @@ fn panels(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSolution> 
     let lc0 = goodman_guess(consts.bq, consts.mu);
     let scans = search_orders(consts.g, SCAN_ORDERS).map(|order| Start::Scan(lc0, order));
     let starts: Vec<Start> = match window {
-        Some((lo, hi)) if too_thin(lo, hi, consts.g) => {
+        Some((lo, hi)) if too_thin(lo, hi) => {
             let mid = 0.5 * (lo + hi);
             return Err(Error::NoConvergence(format!(
                 "the slip zones (1 - c ~ {:.0e} by the near-bonded law) are too thin for the \
-                 panels (1 - c above about {:.0e}, {:.0e} at large friction, and at most \
-                 {MAX_UNKNOWNS} unknowns at order {THIN_FINAL_ORDER}: {} there), and the \
-                 bonded limit's bounds miss the tolerances",
+                 panels (1 - c above about {:.0e}, and at most {MAX_UNKNOWNS} unknowns at \
+                 order {THIN_FINAL_ORDER}: {} there), and the bonded limit's bounds miss the \
+                 tolerances",
                 edge_of(mid).1,
                 edge_of(T_MAX - WINDOW_MARGIN - 1.0).1,
-                edge_of(SMALL_G_T_MAX).1,
                 thin_unknowns(mid).map_or("no layout".into(), |u| u.to_string())
             )));
         }

@@ -529,6 +529,20 @@ fn thinnest_slip_zone_meets_1e_10() {
     );
 }
 
+/// Thin slip zones at large friction (b* = 0.1, mu~ = 1e6, g = 3e-6, 1 - c = 1.4e-20): the
+/// panels' root search fails there, and the extrapolation in 1/mu~ from the panels at mu~ =
+/// 530, 1061 and 2122 meets 1e-10 ([`thin_slip_zone`]: inside the near-bonded law's window,
+/// within 3 sqrt(1 - c) of the bonded tractions).
+#[test]
+fn thin_slip_zone_at_large_friction() {
+    let (_, s, _, _) = thin_slip_zone(0.1, 1e6);
+    assert!(
+        matches!(s.regime, Regime::LargeFriction(_)),
+        "{:?}",
+        s.regime
+    );
+}
+
 /// An auxetic extreme (b* = 0.99995, nu -> -1) whose scan starts beyond the first root: from
 /// c = 1/2 (below Goodman's c, near 1) the defect is negative on a later lobe and the first
 /// sign change met, c = 0.888, has p < 0; the rescan from far below finds the first root,
