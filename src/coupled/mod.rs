@@ -968,15 +968,12 @@ fn panels_at_edge(
     None
 }
 
-/// The panels ([`panels`]), or their extrapolation in 1/mu~ ([`large_friction`]) beyond
-/// [`MU_EXTRAPOLATE`] and in thin slip zones at large friction ([`thin_extrapolation`]).
+/// The panels ([`panels`]), or their extrapolation in 1/mu~ ([`large_friction`]): in thin
+/// slip zones at large friction from lower nodes ([`thin_extrapolation`]), else beyond
+/// [`MU_EXTRAPOLATE`].
 fn panel_regimes(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSolution> {
     let base = (k.bp > 0.0).then(|| k.reduced().0).and_then(|r| {
-        if r.mu >= MU_EXTRAPOLATE {
-            Some(large_friction::M)
-        } else {
-            thin_extrapolation(&r)
-        }
+        thin_extrapolation(&r).or((r.mu >= MU_EXTRAPOLATE).then_some(large_friction::M))
     });
     if let Some(m) = base {
         let l = LargeFriction::new(k, m, tol, traction_tol)?;
