@@ -12,13 +12,11 @@
 //! The grid spans b* = 0.005 .. 0.99 (31 rows, geometric below 0.1 and denser near 1) and
 //! mu~ = 1e-6 .. 1e6 (43 columns, log10 mu~ by 0.2 over -4 .. 1, where the stick zone opens
 //! at every b* of the grid, and coarser outside; the generator's `main.rs` says why). Entries
-//! are inf where COUPLED failed (in the table regenerated on 2026-11-23 after COUPLED's
-//! large-friction work: 64 of the 1333 points, 166 before it; 65 after the unpivoted QR,
-//! which swapped 8 of them for 7 others where COUPLED at 1e-10 sits at its rounding limit,
-//! orders 22-26 with estimates of 1e-10 .. 1e-9 either way; at large friction from
-//! mu~ ~ 1e5 .. 1e6 for b* >= 0.45 and from ~1e4 at b* >= 0.9, from mu~ ~ 2.5 at b* = 0.1,
-//! and at one or two points per row b* <= 0.075 where the slip zones are ~1e-20 thin): the
-//! cells around them give no bound, so AUTO leaves the approximations alone there.
+//! would be inf where COUPLED failed, and the cells around them give no bound, so AUTO
+//! leaves the approximations alone there. Since the regeneration of 2026-11-25 (thin slip
+//! zones at large friction extrapolated in 1/mu~, the last 5 columns of b* = 0.1) there are
+//! none; the table of 2026-11-23 had 64 of the 1333 points inf (166 before COUPLED's
+//! large-friction work), 21 were left after the thin slip zones.
 //!
 //! The bound at a point is empirical, not certified: [`SAFETY`] times the largest tabulated
 //! error at the corners of its grid cell, plus [`FLOOR`] (see [`bound`]). It relies on the
