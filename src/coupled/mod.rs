@@ -997,7 +997,7 @@ fn thin_extrapolation(r: &Coupling) -> Option<f64> {
 }
 
 /// The lc = ln(c / (1 - c)) of the near-bonded window's centre beyond which thin slip zones
-/// at large friction are extrapolated (1 - c = 1.7e-15; b* = 0.12 at large friction: 36.6).
+/// at large friction are extrapolated (1 - c = 1.7e-15; b* = 0.12 at large friction: 37.6).
 const THIN_EXTRAPOLATE: f64 = 34.0;
 
 /// The system's constants of the reduced coupling (bp = bq = b*, mu~; `k` itself when
