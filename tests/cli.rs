@@ -137,6 +137,11 @@ fn solve_prints_the_librarys_solution_exactly() {
         s.one_minus_c().to_bits()
     );
     assert_eq!(number(field(out, "error estimate")), s.error_estimate());
+    assert_eq!(
+        number(field(out, "traction error estimate")),
+        s.traction_error_estimate()
+    );
+    assert_eq!(number(field(out, "traction tolerance")), 1e-8);
     assert_eq!(field(out, "method"), "coupled");
     assert_eq!(field(out, "method requested"), "auto");
     assert_eq!(number(field(out, "mu")), 0.3);
@@ -201,6 +206,12 @@ fn json_output_parses_and_holds_every_material_kind() {
         assert_eq!(v["c"].as_f64(), Some(s.c()));
         assert_eq!(v["one_minus_c"].as_f64(), Some(s.one_minus_c()));
         assert_eq!(v["error_estimate"].as_f64(), Some(s.error_estimate()));
+        let traction_estimate = s.traction_error_estimate();
+        assert_eq!(
+            v["traction_error_estimate"].as_f64(),
+            traction_estimate.is_finite().then_some(traction_estimate)
+        );
+        assert_eq!(v["traction_tolerance"].as_f64(), Some(1e-6));
         assert_eq!(
             v["effective"]["kappa"].as_f64(),
             Some(material.constants().kappa)
@@ -211,6 +222,69 @@ fn json_output_parses_and_holds_every_material_kind() {
         assert_eq!(floats(&v["tractions"]["p"]), p);
         assert_eq!(floats(&v["tractions"]["q"]), q);
         assert_eq!(v["tractions"]["zone"].as_array().unwrap().len(), 7);
+    }
+}
+
+/// --traction-tol sets the traction target apart from --tol, as
+/// `orthoslip_contact_set_traction_tolerance` does: the library's solution with the same
+/// targets, printed exactly, with a traction estimate within the target; `inf` (tractions not
+/// needed) lets AUTO answer c alone: at 1e-6 from COUPLED's tabulated c with Goodman's
+/// tractions (their estimate far above 1e-6), at 5e-2 from SPENCE.
+#[test]
+fn traction_tolerance_is_set_apart_from_the_tolerance() {
+    let solved = |tol: &'static str, traction_tol: &'static str| {
+        let run = solve_ply(&[
+            "--mu",
+            "0.3",
+            "--tol",
+            tol,
+            "--traction-tol",
+            traction_tol,
+            "--points",
+            "0",
+            "--format",
+            "json",
+        ]);
+        let v = json(&run.stdout);
+        let mut contact = Contact::new(ply());
+        contact.set_friction(0.3).unwrap();
+        contact.set_tolerance(tol.parse().unwrap()).unwrap();
+        contact
+            .set_traction_tolerance(traction_tol.parse().unwrap())
+            .unwrap();
+        let s = contact.solve().unwrap();
+        assert_eq!(v["c"].as_f64(), Some(s.c()));
+        assert_eq!(v["method"], method_name(s.method()));
+        let estimate = s.traction_error_estimate();
+        assert_eq!(
+            v["traction_error_estimate"].as_f64(),
+            estimate.is_finite().then_some(estimate)
+        );
+        (v, s)
+    };
+    let (v, s) = solved("1e-6", "1e-10");
+    assert_eq!(v["traction_tolerance"].as_f64(), Some(1e-10));
+    assert_eq!(v["tolerance"].as_f64(), Some(1e-6));
+    assert!(s.traction_error_estimate() <= 1e-10);
+    assert_eq!(s.method(), Method::Coupled);
+    let (v, s) = solved("1e-6", "inf");
+    // JSON has no infinity: the target prints as null, like an estimate outside the table
+    assert!(v["traction_tolerance"].is_null());
+    assert!(s.error_estimate() <= 1e-6);
+    assert!(s.traction_error_estimate() > 1e-3, "tractions not refined");
+    let (_, s) = solved("5e-2", "inf");
+    assert!(s.error_estimate() <= 5e-2);
+    assert_eq!(s.method(), Method::Spence);
+}
+
+/// The method's name as the CLI prints it.
+fn method_name(m: Method) -> &'static str {
+    match m {
+        Method::Auto => "auto",
+        Method::Goodman => "goodman",
+        Method::Spence => "spence",
+        Method::Coupled => "coupled",
+        Method::Lcp => "lcp",
     }
 }
 
@@ -289,6 +363,7 @@ fn sweep_prints_c_against_mu() {
             "one_minus_c",
             "method",
             "error_estimate",
+            "traction_error_estimate",
             "status"
         ]
     );
@@ -303,7 +378,8 @@ fn sweep_prints_c_against_mu() {
         assert_eq!(number(row[2]), s.one_minus_c());
         assert_eq!(row[3], "coupled");
         assert_eq!(number(row[4]), s.error_estimate());
-        assert_eq!(row[5], "ok");
+        assert_eq!(number(row[5]), s.traction_error_estimate());
+        assert_eq!(row[6], "ok");
         assert!(s.c() > last_c, "c grows with mu");
         last_c = s.c();
     }

@@ -98,6 +98,11 @@ pub struct SceneArgs {
     /// coupled and lcp refine until they meet it; goodman and spence ignore it.
     #[arg(long, default_value = "1e-8")]
     pub tol: f64,
+    /// Target for the traction error, int (|p - p_exact| + |q - q_exact|) dx over the punch
+    /// in units of the normal load (default: --tol; inf: the tractions are not needed, only c
+    /// counts, and auto may take a cheaper method).
+    #[arg(long, value_name = "TOL")]
+    pub traction_tol: Option<f64>,
 }
 
 /// The material, given as exactly one of three constant sets.

@@ -71,6 +71,9 @@ impl Scene {
         let method = args.method.into();
         contact.set_method(method);
         contact.set_tolerance(args.tol)?;
+        if let Some(t) = args.traction_tol {
+            contact.set_traction_tolerance(t)?;
+        }
         let mut material = vec![("model", Value::from(given.model))];
         material.extend(given.constants.into_iter().map(|(key, v)| (key, v.into())));
         let effective = [
@@ -93,6 +96,13 @@ impl Scene {
                 method_name(method).into(),
             ),
             (name("tolerance"), args.tol.into()),
+            (
+                Name {
+                    key: "traction_tolerance",
+                    label: "traction tolerance",
+                },
+                contact.traction_tolerance().into(),
+            ),
         ];
         Ok(Self { contact, fields })
     }

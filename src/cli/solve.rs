@@ -16,6 +16,11 @@ pub const ERROR_ESTIMATE: Name = Name {
     label: "error estimate",
 };
 
+pub const TRACTION_ERROR_ESTIMATE: Name = Name {
+    key: "traction_error_estimate",
+    label: "traction error estimate",
+};
+
 /// Solves the scene and writes the report.
 pub fn run(args: &SolveArgs, out: &mut impl Write) -> Result<(), Failure> {
     let Scene {
@@ -30,6 +35,7 @@ pub fn run(args: &SolveArgs, out: &mut impl Write) -> Result<(), Failure> {
         (ONE_MINUS_C, s.one_minus_c().into()),
         (name("method"), method_name(s.method()).into()),
         (ERROR_ESTIMATE, s.error_estimate().into()),
+        (TRACTION_ERROR_ESTIMATE, s.traction_error_estimate().into()),
     ]);
     let n = args.points;
     let rows = (0..n)

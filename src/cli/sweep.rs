@@ -1,4 +1,4 @@
-//! `orthoslip sweep`: c, 1 - c, the method used and its error estimate against the friction
+//! `orthoslip sweep`: c, 1 - c, the method used and its error estimates against the friction
 //! coefficient, one solve per mu. A failed solve leaves its row empty but for its status and
 //! does not stop the sweep.
 
@@ -6,7 +6,7 @@ use std::io::Write;
 
 use super::args::{Spacing, SweepArgs, method_name};
 use super::report::{Report, Value, name};
-use super::solve::{ERROR_ESTIMATE, ONE_MINUS_C};
+use super::solve::{ERROR_ESTIMATE, ONE_MINUS_C, TRACTION_ERROR_ESTIMATE};
 use super::{Failure, Scene, status_of};
 
 /// The friction coefficients: `steps` values from `from` to `to`, both ends exactly, equally
@@ -61,11 +61,13 @@ pub fn run(args: &SweepArgs, out: &mut impl Write) -> Result<(), Failure> {
                     s.one_minus_c().into(),
                     method_name(s.method()).into(),
                     s.error_estimate().into(),
+                    s.traction_error_estimate().into(),
                     "ok".into(),
                 ],
                 Err(e) => {
                     let row = vec![
                         mu.into(),
+                        Value::Missing,
                         Value::Missing,
                         Value::Missing,
                         Value::Missing,
@@ -87,6 +89,7 @@ pub fn run(args: &SweepArgs, out: &mut impl Write) -> Result<(), Failure> {
             ONE_MINUS_C,
             name("method"),
             ERROR_ESTIMATE,
+            TRACTION_ERROR_ESTIMATE,
             name("status"),
         ],
         rows,
