@@ -120,10 +120,14 @@ impl Basis {
 /// (1 -+ t)^g and 1, but not nearly dependent on them as g -> 0, where the solution's
 /// coefficients in (1 -+ t)^g and 1 grow like 1 / g and cancel (its limit has ln|x - c|):
 /// the least squares lost accuracy like eps / g^2 there (defect noise 1e-9 at g = 4e-5; 2e-11
-/// in the log basis). Above it the power weights: the field takes Jacobi weights, and a log
-/// weight split into its parts (coupled::expansion) costs it eps / g times the coefficients
-/// (slip offsets of 3e-9 next to c at g = 1.5e-3, 1e-11 with the power weights).
-pub(crate) const LOG_BELOW: f64 = 1e-3;
+/// in the log basis). The loss grows as b* -> 1: at g = 3.2e-3 (mu~ = 100) the power weights'
+/// traction estimate stalled at 2.0e-10, 3.1e-10, 3.2e-9 and 6.5e-9 for b* = 0.999, 0.9995,
+/// 0.9999 and 0.99995 (orders up to 34), the log weights meet 1e-10 at order 19 (6.5e-12 ..
+/// 9.6e-11); on 17 scenes with g = 1e-3 .. 1e-2 (b* = 0.15 .. 0.99, tolerance 1e-10) the two
+/// bases agree on c within their estimates, or to 2.5e-14 (b* = 0.99, mu~ = 35, estimates
+/// 2.0e-14 together), and both meet the traction tolerance. Above it the power weights, which the field takes as Jacobi weights
+/// (the log-weighted panels it resamples, `coupled::expansion`).
+pub(crate) const LOG_BELOW: f64 = 1e-2;
 
 /// `count` functions of one basis on a panel.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -9,7 +9,7 @@
 //! Each panel gets OVERSAMPLE times as many collocation points (Gauss-Legendre points of the
 //! panel) as it has unknowns; (E1) with p ~ (1-x)^(-g) has index 1, so (E4) fixes the scale.
 
-use super::mesh::{Basis, Block, LOG_BELOW, Layout, Mesh, Panel, Pt};
+use super::mesh::{Basis, Block, Layout, Mesh, Panel, Pt};
 use crate::error::{Error, Result};
 use crate::numerics::cauchy::WeightedFamily;
 use crate::numerics::lstsq::LeastSquares;
@@ -251,21 +251,26 @@ impl WrongCFold {
 }
 
 /// From the mesh's unknowns to the system's columns and back: the wrong-c modes folded into
-/// one ([`WrongCFold`]) and, at large friction (g below [`LOG_BELOW`]), the slip panels'
+/// one ([`WrongCFold`]) and, at large friction (g below [`SCALED_BELOW`]), the slip panels'
 /// unknowns scaled to q = mu p (O(1) where p is O(1 / mu)), so that no row's largest entry
 /// is one whose term is mu times smaller (a row scaled by it lost eps mu ~ eps / g relative
-/// in (E1) on the slip zones). Not at moderate friction: there the scaling cost the thin slip
-/// zones of b* = 0.12, mu~ = 215-2154 (1 - c ~ 5e-17) the defect's sign change in the
-/// near-bonded window.
+/// in (E1) on the slip zones).
 struct Columns {
     fold: Option<WrongCFold>,
     /// Scale of each unknown's column.
     scale: Vec<f64>,
 }
 
+/// The edge exponent below which the slip panels' unknowns are q = mu p ([`Columns`]). Not
+/// at moderate friction: there the scaling cost the thin slip zones of b* = 0.12,
+/// mu~ = 215-2154 (1 - c ~ 5e-17) the defect's sign change in the near-bonded window (tried
+/// again up to g = 1e-2, with [`super::mesh::LOG_BELOW`]: no sign change in the window at
+/// b* = 0.12, mu~ = 464 and at the thin extrapolation's nodes there).
+const SCALED_BELOW: f64 = 1e-3;
+
 impl Columns {
     fn new(mesh: &Mesh, k: Constants) -> Self {
-        let slip_scale = if k.g < LOG_BELOW { 1.0 / k.mu } else { 1.0 };
+        let slip_scale = if k.g < SCALED_BELOW { 1.0 / k.mu } else { 1.0 };
         let mut scale = vec![1.0; mesh.unknowns];
         for panel in mesh.panels.iter().filter(|p| !p.stick) {
             scale[panel.p_offset..panel.p_offset + panel.np()].fill(slip_scale);
