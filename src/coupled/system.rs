@@ -336,18 +336,22 @@ const FIELD_FLOOR: f64 = 1e-3;
 /// 1e-10 in the tractions).
 const WEIGHTED_BELOW: f64 = 1e-6;
 
-/// Traction tolerances below which the rows are weighted ([`weighs_rows`]).
-const WEIGHTED_TRACTIONS: f64 = 1e-9;
+/// The unweighted rows' noise in the traction estimate, in units of eps / (1 - c)^(1/2)
+/// (measured: the order-to-order distance 0.5 .. 1.6 of that unit, at 1 - c = 8e-13 and
+/// 6e-18), with room for the estimate (twice the distance) to fall well inside a tolerance.
+const ROW_NOISE: f64 = 100.0;
 
 /// Whether the solves near stick edge 1 - c = w for traction tolerance `traction_tol` take a
 /// model for their row weights ([`row_weight`]): slip zones thinner than [`WEIGHTED_BELOW`]
-/// and tolerances below [`WEIGHTED_TRACTIONS`]. The unweighted rows' noise (up to 1e-10 at
-/// 1 - c = 1e-12) lies far below coarser tolerances, and weighting the rows slows the
-/// convergence of c, which the rows next to c decide (b* = 0.2, mu~ = 5, 1 - c = 8e-9: c and
-/// tractions to 1e-8 in 516 ms weighted, 230 ms not). Decided once per order (from the lower
-/// order's stick edge), so that defect(c) at one order stays smooth.
+/// whose unweighted rows' noise, [`ROW_NOISE`] eps / w^(1/2), exceeds the tolerance. Below
+/// it the rows stay as they are: weighting them slows the convergence of c, which the rows
+/// next to c decide (b* = 0.2, mu~ = 5, 1 - c = 8e-9: c and tractions to 1e-8 in 516 ms
+/// weighted, 230 ms not). The rule was a fixed tolerance, 1e-9, which left the thinnest
+/// zones unweighted at 1e-9 (b* = 0.0075, mu~ = 0.1, 1 - c = 6e-18: estimate 8.8e-8, 3174
+/// unknowns, while 1e-10 was met). Decided once per order (from the lower order's stick
+/// edge), so that defect(c) at one order stays smooth.
 pub(crate) fn weighs_rows(w: f64, traction_tol: f64) -> bool {
-    w < WEIGHTED_BELOW && traction_tol < WEIGHTED_TRACTIONS
+    w < WEIGHTED_BELOW && ROW_NOISE * f64::EPSILON / w.sqrt() > traction_tol
 }
 
 /// The weight of the collocation row at x, besides its scaling to a largest entry of 1:
