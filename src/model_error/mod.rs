@@ -5,7 +5,8 @@
 //!
 //! c depends on the material and the friction only through (b*, mu~) (THEORY.md section 4),
 //! for the approximations as for the exact problem, so the model error is a function on that
-//! plane. It is measured offline with the COUPLED solver (to [`FLOOR`]) on a grid of b* and
+//! plane. It is measured offline with the COUPLED solver (c to [`FLOOR`], the tractions to a
+//! tenth of [`TRACTION_FLOOR`]) on a grid of b* and
 //! log10 mu~ (`cargo run --release --example model_error_table` regenerates `table.rs`; the
 //! generator lives with that example, outside the library).
 //!
@@ -79,8 +80,8 @@ pub fn tabulated_tractions(a: Approximation) -> &'static Grid {
     }
 }
 
-/// Added to every traction bound: the traction accuracy of the COUPLED reference at
-/// [`FLOOR`] (its own estimate stays below 1e-8 on the grid).
+/// Added to every traction bound: ten times the traction tolerance of the COUPLED
+/// reference (the generator solves its tractions to 1e-9).
 pub const TRACTION_FLOOR: f64 = 1e-8;
 
 /// An empirical bound on the traction error of the approximation at the coupling k
