@@ -69,6 +69,15 @@ impl FullSlip {
         }
     }
 
+    /// The full-slip tractions of `k` (mu > 0) cut off at a stick edge c known otherwise (the
+    /// auxetic limit, `super::auxetic`).
+    pub(crate) fn with_edge(k: &Coupling, c: f64) -> Self {
+        FullSlip {
+            ln_c: c.ln(),
+            ..Self::new(k)
+        }
+    }
+
     /// The traction error bound TRACTION_FACTOR c^(2g).
     fn traction_bound(&self) -> f64 {
         TRACTION_FACTOR * (2.0 * self.g * self.ln_c).exp()

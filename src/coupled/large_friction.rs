@@ -19,7 +19,7 @@
 //! moves by a few per cent from 4 M to infinity (b* = 0.1: 1.4159e-20 at mu~ = 1e3,
 //! 1.3934e-20 at 1e6).
 
-use super::{CoupledSolution, panels};
+use super::{CoupledSolution, panels_or_auxetic};
 use crate::error::Result;
 use crate::field::{Expand, Expansion, fitted_panel, graded_plain};
 use crate::numerics::cauchy::Weight;
@@ -71,8 +71,8 @@ pub(crate) struct LargeFriction {
 }
 
 /// Lagrange weights at y of the polynomial through the nodes `nodes` (None: left out).
-fn lagrange(y: f64, nodes: [Option<f64>; 3]) -> [f64; 3] {
-    let mut w = [0.0; 3];
+pub(crate) fn lagrange<const N: usize>(y: f64, nodes: [Option<f64>; N]) -> [f64; N] {
+    let mut w = [0.0; N];
     for (i, wi) in w.iter_mut().enumerate() {
         let Some(yi) = nodes[i] else { continue };
         *wi = nodes
@@ -122,7 +122,7 @@ impl LargeFriction {
             .iter()
             .map(|&mu| {
                 let at = Coupling { mu, ..r };
-                panels(&at, SHARE * tol, SHARE * traction_tol / delta.max(1.0))
+                panels_or_auxetic(&at, SHARE * tol, SHARE * traction_tol / delta.max(1.0))
             })
             .collect::<Result<Vec<_>>>()?;
         let (edge, error, [quad, line]) = extrapolate_edge(

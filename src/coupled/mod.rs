@@ -44,6 +44,9 @@
 //! - mu~ >= 1e7, beyond the panels' reach: the quadratic in 1/mu~ through the panels'
 //!   solutions at mu~ = 1e6, 2e6, 4e6 ([`large_friction`]); in thin slip zones (1 - c below
 //!   about 1e-15) from g < 1e-3 on, through lower frictions (b* = 0.1: 530, 1061, 2122);
+//! - b* within 1e-5 of 1 (the auxetic limit, ill-conditioned): c = K s^(1/k0) with K
+//!   extrapolated in s = 1 - b* from the panels at s = 1e-5 .. 8e-5, then the root search
+//!   in a window around it where it agrees, else the panels at that c ([`auxetic`]);
 //! - c alone (traction tolerance +infinity, [`solve_to`]): the tabulated stick edge
 //!   ([`crate::stick_edge_table`]) where its bound meets the tolerance, with Goodman's
 //!   tractions and their model-error bound.
@@ -61,6 +64,7 @@
 //! solves per order (100-350 unknowns at the last); `cargo run --release --example
 //! coupled_timing` measures the cost.
 
+mod auxetic;
 mod expansion;
 pub(crate) mod full_slip;
 mod large_friction;
@@ -222,6 +226,13 @@ const SENSITIVITY_STEP: f64 = 1e-6;
 /// Tolerances below which the finer oversampling is used (defect's noise at the default one
 /// is 1e-12 .. 1e-13 in c at orders 10-26).
 const FINE_BELOW: f64 = 1e-11;
+
+/// b* from which the root search keeps the default oversampling at every tolerance: near
+/// b* = 1 at large friction the finer one moved the root by more than its estimates (c
+/// alone to 1e-12 at mu~ = 4e6: 3.4e-10 off at b* = 0.99998, 6.3e-11 off with an estimate of
+/// 7.4e-14 at b* = 0.99999), while the default stays within 3.4e-14 of c there (against c to
+/// 1e-10 with the tractions to 1e-8; at b* = 0.9999 and 0.99995 the two agree).
+const FINE_B_BELOW: f64 = 0.999;
 
 /// Accuracy in lc of the first root at the scan order (a start for the higher orders).
 const SCAN_XTOL: f64 = 1e-4;
@@ -755,14 +766,21 @@ pub fn solve(k: &Coupling, tol: f64) -> Result<CoupledSolution> {
     Ok(s)
 }
 
-/// The panels' estimate missing its tolerance.
+/// The panels' estimate missing its tolerance (near b* = 1 with the conditioning there as
+/// the reason, [`auxetic::conditioning`]).
 fn not_met(estimate: f64, tolerance: f64, s: &CoupledSolution) -> Error {
+    let r = s.coupling.reduced().0;
+    let why = if s.coupling.bp > 0.0 && 1.0 - r.bp < CONDITIONING_NOTE_BELOW {
+        format!("; {}", auxetic::conditioning(&r))
+    } else {
+        String::new()
+    };
     Error::ToleranceNotMet {
         estimate,
         tolerance,
         detail: format!(
             "coupled: orders up to {} per panel, {} unknowns (c within {:.1e}, tractions \
-             within {:.1e})",
+             within {:.1e}){why}",
             s.order,
             s.unknowns(),
             s.error,
@@ -770,6 +788,10 @@ fn not_met(estimate: f64, tolerance: f64, s: &CoupledSolution) -> Error {
         ),
     }
 }
+
+/// 1 - b* below which a missed tolerance names the conditioning near b* = 1 as its reason
+/// (the panels' traction estimates stall at about 5e-15 / (1 - b*), [`auxetic`]).
+const CONDITIONING_NOTE_BELOW: f64 = 1e-3;
 
 /// Solves (E1)-(E4) for `k` to |c - c_exact| <= tol and a traction error (the norm of
 /// [`crate::problem::traction_distance`]) <= traction_tol (+infinity: c alone). A limit
@@ -894,37 +916,57 @@ fn tabulated(k: &Coupling, tol: f64) -> Option<CoupledSolution> {
 }
 
 /// The panels at the tabulated stick edge, where its bound meets `tol` (below
-/// [`MU_EXTRAPOLATE`]): no root search, one solve per order ([`ORDERS`]) at that c, until the
-/// traction estimate meets `traction_tol`, at [`system::oversample_at_known_c`]. The estimate
-/// is [`ORDER_SAFETY`] times the distance of the last two orders' tractions, plus the norm of
-/// the wrong-c modes they leave out (as in [`panels_from`]), plus what the table's error in c
-/// moves the tractions: at [`SENSITIVITY_ORDER`] the distance of the tractions at c and at lc +
-/// [`SENSITIVITY_STEP`], scaled to the bound (linear in it) and times ORDER_SAFETY. None where
-/// that term alone takes half the traction tolerance (large friction, b* -> 1: up to 1.2e-9 for
-/// the table's 3e-12), the last order misses it or the solution is inadmissible (the root
-/// search decides there).
+/// [`MU_EXTRAPOLATE`]) and their estimate meets `traction_tol` ([`panels_at_edge`], the
+/// sensitivity to c measured at [`SENSITIVITY_ORDER`]); None where they miss it, where the
+/// sensitivity alone takes half the traction tolerance (large friction, b* -> 1: up to 1.2e-9
+/// for the table's 3e-12) or the solution is inadmissible: the root search decides there.
 fn panels_at_table_edge(k: &Coupling, tol: f64, traction_tol: f64) -> Option<CoupledSolution> {
     if k.reduced().0.mu >= MU_EXTRAPOLATE {
         return None;
     }
     let (edge, error) = table_edge(k).filter(|&(_, error)| error <= tol)?;
-    panels_at_edge(k, edge, error, traction_tol)
+    panels_at_edge(k, edge, error, traction_tol, Sensitivity::AtFirstOrder)
+        .filter(|s| s.traction_error <= traction_tol)
 }
 
-/// [`panels_at_table_edge`] at a given stick edge, known within `error`.
+/// Where [`panels_at_edge`] measures how the tractions move with c.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Sensitivity {
+    /// Once, at [`SENSITIVITY_ORDER`], the first of [`ORDERS`] (a rate of change needs no
+    /// more, and is cheap there); where it alone takes half the traction tolerance, no
+    /// solution.
+    AtFirstOrder,
+    /// At each order whose estimate meets the traction tolerance without it (the auxetic
+    /// limit, where order 6 is far from converged: at b* = 1 - 1e-5, mu~ = 10 its measure took
+    /// the whole tolerance 1e-8 for an error of 1e-10 c in c).
+    AtFinalOrder,
+}
+
+/// The panels at a given stick edge, known within `error`: no root search, one solve per
+/// order ([`ORDERS`]) at that c, until the traction estimate meets `traction_tol`, at
+/// [`system::oversample_at_known_c`]. The estimate is [`ORDER_SAFETY`] times the distance of
+/// the last two orders' tractions, plus the norm of the wrong-c modes they leave out (as in
+/// [`panels_from`]), plus what the error in c moves the tractions: ORDER_SAFETY times the
+/// distance of the tractions at c and at lc + [`SENSITIVITY_STEP`], scaled to `error`
+/// (linear in it), measured where `sensitivity` says. Returns the first order's solution that
+/// meets `traction_tol`, else the largest order's (its estimate above `traction_tol`, without
+/// the sensitivity in [`Sensitivity::AtFinalOrder`]); None where a solve fails, the
+/// sensitivity at the first order takes half the tolerance or the solution is inadmissible.
 fn panels_at_edge(
     k: &Coupling,
     edge: StickEdge,
     error: f64,
     traction_tol: f64,
+    sensitivity_at: Sensitivity,
 ) -> Option<CoupledSolution> {
     let (consts, delta) = reduced_constants(k);
     let oversample = system::oversample_at_known_c(traction_tol);
     let (c, w) = (edge.c, edge.one_minus_c);
+    let (c2, w2) = edge_of(c.ln() - w.ln() + SENSITIVITY_STEP);
     let layout = Layout::for_edge(c, w);
     let mut ls = LeastSquares::default();
     let mut prev: Option<Discrete> = None;
-    let mut sensitivity = f64::INFINITY;
+    let mut sensitivity = 0.0;
     for &n in &ORDERS {
         let fams = Families::new(consts.g, n);
         let model = prev
@@ -933,21 +975,30 @@ fn panels_at_edge(
         let mut solve =
             |c, w| solve_fixed(consts, c, w, n, &fams, &layout, oversample, &mut ls, model);
         let d = solve(c, w).ok()?;
-        if n == SENSITIVITY_ORDER {
-            let (c2, w2) = edge_of(c.ln() - w.ln() + SENSITIVITY_STEP);
+        // ORDER_SAFETY times the distance to the tractions at lc + SENSITIVITY_STEP, per error
+        let mut measure = || -> Option<f64> {
             let shifted = solve(c2, w2).ok()?;
-            sensitivity = ORDER_SAFETY * d.traction_distance(&shifted, delta) * error
-                / (c * w * SENSITIVITY_STEP);
+            Some(
+                ORDER_SAFETY * d.traction_distance(&shifted, delta) * error
+                    / (c * w * SENSITIVITY_STEP),
+            )
+        };
+        if sensitivity_at == Sensitivity::AtFirstOrder && n == SENSITIVITY_ORDER {
+            sensitivity = measure()?;
             if sensitivity > 0.5 * traction_tol {
-                // the table's c is not accurate enough for these tractions
+                // c is not known accurately enough for these tractions
                 return None;
             }
         }
+        let largest = at_largest_order(d.mesh.unknowns, n);
         if let Some(p) = &prev {
-            let traction_error = ORDER_SAFETY * d.traction_distance(p, delta)
+            let mut traction_error = ORDER_SAFETY * d.traction_distance(p, delta)
                 + d.wrong_c_norm(delta, error)
                 + sensitivity;
-            if traction_error <= traction_tol {
+            if sensitivity_at == Sensitivity::AtFinalOrder && traction_error <= traction_tol {
+                traction_error += measure()?;
+            }
+            if traction_error <= traction_tol || largest {
                 let admissible = inadmissible(&d, consts.mu).is_none();
                 return admissible.then_some(CoupledSolution {
                     coupling: *k,
@@ -960,7 +1011,7 @@ fn panels_at_edge(
                 });
             }
         }
-        if at_largest_order(d.mesh.unknowns, n) {
+        if largest {
             return None;
         }
         prev = Some(d);
@@ -970,7 +1021,7 @@ fn panels_at_edge(
 
 /// The panels ([`panels`]), or their extrapolation in 1/mu~ ([`large_friction`]): in thin
 /// slip zones at large friction from lower nodes ([`thin_extrapolation`]), else beyond
-/// [`MU_EXTRAPOLATE`].
+/// [`MU_EXTRAPOLATE`]; or, near b* = 1, in b* ([`auxetic`]).
 fn panel_regimes(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSolution> {
     let base = (k.bp > 0.0).then(|| k.reduced().0).and_then(|r| {
         thin_extrapolation(&r).or((r.mu >= MU_EXTRAPOLATE).then_some(large_friction::M))
@@ -982,7 +1033,16 @@ fn panel_regimes(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSol
         s.order = order;
         return Ok(s);
     }
-    panels(k, tol, traction_tol)
+    panels_or_auxetic(k, tol, traction_tol)
+}
+
+/// The panels ([`panels`]), or near b* = 1 the auxetic limit ([`auxetic`]).
+fn panels_or_auxetic(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSolution> {
+    if k.bp > 0.0 && auxetic::applies(&k.reduced().0) {
+        auxetic::solve(k, tol, traction_tol)
+    } else {
+        panels(k, tol, traction_tol)
+    }
 }
 
 /// Thin slip zones at large friction: where the near-bonded law's window lies beyond
@@ -1018,12 +1078,7 @@ fn reduced_constants(k: &Coupling) -> (Constants, f64) {
 /// smallest estimate of c (the callers compare).
 fn panels(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSolution> {
     let (consts, delta) = reduced_constants(k);
-    // tolerances near the defect's rounding noise take the finer (costlier) oversampling
-    let oversample = if tol < FINE_BELOW {
-        system::OVERSAMPLE_FINE
-    } else {
-        system::OVERSAMPLE
-    };
+    let oversample = search_oversample(tol, &consts);
     // the first root (where the near-bonded law predicts thin slip zones inside its window,
     // else scanned from below at the cheap order, then at the robust one), its slope, then
     // the orders in turn
@@ -1110,6 +1165,37 @@ fn panels(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSolution> 
     }
 }
 
+/// Collocation points per unknown of a root search to tolerance `tol` on c: near the
+/// defect's rounding noise the finer (costlier) oversampling, but not near b* = 1
+/// ([`FINE_B_BELOW`]).
+fn search_oversample(tol: f64, k: &Constants) -> f64 {
+    if tol < FINE_BELOW && k.bp < FINE_B_BELOW {
+        system::OVERSAMPLE_FINE
+    } else {
+        system::OVERSAMPLE
+    }
+}
+
+/// The root search from a window (lo, hi) of lc = ln(c / (1 - c)) known to hold the root
+/// (the auxetic limit's, around its extrapolated c), at the window orders in turn: the first
+/// admissible solution ([`panels_from`]: it may miss the tolerances, the caller compares).
+fn panels_in_window(
+    k: &Coupling,
+    tol: f64,
+    traction_tol: f64,
+    (lo, hi): (f64, f64),
+) -> Option<CoupledSolution> {
+    let (consts, delta) = reduced_constants(k);
+    let oversample = search_oversample(tol, &consts);
+    WINDOW_ORDERS.iter().find_map(|&n| {
+        let start = Start::Window(lo, hi, n);
+        match panels_from(k, (tol, traction_tol), consts, delta, oversample, start) {
+            Ok((s, None)) => Some(s),
+            _ => None,
+        }
+    })
+}
+
 /// Where the search for the first root starts.
 #[derive(Clone, Copy, Debug)]
 enum Start {
@@ -1130,8 +1216,9 @@ impl Start {
 
 /// [`panels`] with the first root found from `start`: the solution at the first order pair
 /// that agrees (c within tol, and the tractions' estimate within traction_tol and their
-/// relative gap within [`TRACTION_RATIO`] tol), else at the last order tried, and what makes
-/// it inadmissible, if anything.
+/// relative gap within [`TRACTION_RATIO`] tol), else at the pair with the smallest traction
+/// gap once the orders have drifted [`DRIFT`] times above it or reached their largest, and
+/// what makes it inadmissible, if anything.
 fn panels_from(
     k: &Coupling,
     (tol, traction_tol): (f64, f64),
@@ -1141,44 +1228,91 @@ fn panels_from(
     start: Start,
 ) -> Result<(CoupledSolution, Option<String>)> {
     let mut root = first_root(consts, start, oversample)?;
+    let mut best: Option<OrderPair> = None;
     for &n in ORDERS.iter().filter(|&&n| n > start.order()) {
         let tols = (tol, traction_tol / delta.max(1.0));
         let next = root_at_order(consts, n, &root, tols, oversample, start)?;
-        let (c, w) = edge_of(next.lc);
         let diff = order_difference(&root, &next);
         let gap = traction_gap(&next.discrete, &root.discrete);
         let close = diff <= tol && gap <= (TRACTION_RATIO * tol).max(TRACTION_FLOOR);
         let last = at_largest_order(next.discrete.mesh.unknowns, n);
-        if close || last {
-            let traction_error = ORDER_SAFETY
-                * next.discrete.traction_distance(&root.discrete, delta)
-                + next.discrete.wrong_c_norm(delta, diff);
-            if traction_error > traction_tol && !last {
-                root = next;
-                continue;
+        let drifted = best.as_ref().is_some_and(|b| gap > DRIFT * b.gap);
+        let lower = std::mem::replace(&mut root, next);
+        let pair = OrderPair {
+            order: n,
+            diff,
+            gap,
+            lower: lower.discrete,
+            upper: root.discrete.clone(),
+        };
+        if close || last || drifted {
+            let traction_error = pair.traction_error(delta);
+            if (close && traction_error <= traction_tol) || last || drifted {
+                // met, or the best this search reaches (the callers compare its estimates
+                // with what they were asked for)
+                let pair = match best {
+                    Some(b) if !close && b.gap < pair.gap => b,
+                    _ => pair,
+                };
+                return Ok(pair.solution(k, delta));
             }
-            // met, or the best this search reaches (the callers compare its estimates with
-            // what they were asked for)
-            let violation = inadmissible(&next.discrete, consts.mu);
-            let edge = if c < 0.5 {
-                StickEdge::from_c(c)
-            } else {
-                StickEdge::from_one_minus_c(w)
-            };
-            let s = CoupledSolution {
-                coupling: *k,
-                edge,
-                error: diff,
-                traction_error,
-                delta,
-                regime: Regime::Panels(next.discrete),
-                order: n,
-            };
-            return Ok((s, violation));
         }
-        root = next;
+        if best.as_ref().is_none_or(|b| pair.gap < b.gap) {
+            best = Some(pair);
+        }
     }
     Err(Error::Internal("coupled: order loop fell through".into()))
+}
+
+/// How far the traction gap of two successive orders may rise above the smallest one seen
+/// before the orders count as drifting in rounding noise: near b* = 1 at large friction the
+/// orders past 19 drift (b* = 0.99998, mu~ = 4e6: at order 34 the gap stood at 1e-6 and c
+/// 3.4e-10 from order 19's, although orders 30 and 34 agreed on c within 2e-13).
+const DRIFT: f64 = 100.0;
+
+/// Two successive orders' discretisations at their roots: the upper one is the solution,
+/// the lower one estimates its errors.
+struct OrderPair {
+    /// The upper order.
+    order: usize,
+    /// The error estimate of the upper order's c ([`order_difference`]).
+    diff: f64,
+    /// Their relative traction gap ([`traction_gap`]).
+    gap: f64,
+    lower: Discrete,
+    upper: Discrete,
+}
+
+impl OrderPair {
+    /// The traction estimate: [`ORDER_SAFETY`] times the distance of the two orders'
+    /// tractions, plus the norm of the wrong-c modes left out of the upper one.
+    fn traction_error(&self, delta: f64) -> f64 {
+        ORDER_SAFETY * self.upper.traction_distance(&self.lower, delta)
+            + self.upper.wrong_c_norm(delta, self.diff)
+    }
+
+    /// The upper order's solution of `k` with its estimates, and what makes it
+    /// inadmissible, if anything.
+    fn solution(self, k: &Coupling, delta: f64) -> (CoupledSolution, Option<String>) {
+        let traction_error = self.traction_error(delta);
+        let (c, w) = (self.upper.mesh.c, self.upper.mesh.w);
+        let edge = if c < 0.5 {
+            StickEdge::from_c(c)
+        } else {
+            StickEdge::from_one_minus_c(w)
+        };
+        let violation = inadmissible(&self.upper, self.upper.k.mu);
+        let s = CoupledSolution {
+            coupling: *k,
+            edge,
+            error: self.diff,
+            traction_error,
+            delta,
+            regime: Regime::Panels(self.upper),
+            order: self.order,
+        };
+        (s, violation)
+    }
 }
 
 /// The first root from `start`, at its order.

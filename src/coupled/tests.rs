@@ -602,11 +602,11 @@ fn auxetic_closer_to_nu_minus_1() {
     check_solution(&k, &s);
 }
 
-/// The panels at a given stick edge (the path behind the tabulated c, no root search)
-/// against the root search's solution at the same coupling: the tractions agree within the
-/// two estimates and satisfy (E1), (E2) by the independent quadratures; with the edge moved
-/// by 1e-9 (and said to be known within that), the estimate still covers the distance (its
-/// sensitivity term).
+/// The panels at a given stick edge (the path behind the tabulated c and the auxetic limit,
+/// no root search; the sensitivity to c measured at either order) against the root search's
+/// solution at the same coupling: the tractions agree within the two estimates and satisfy
+/// (E1), (E2) by the independent quadratures; with the edge moved by 1e-9 (and said to be
+/// known within that), the estimate still covers the distance (its sensitivity term).
 #[test]
 fn fixed_edge_panels_match_the_search() {
     let (bp, bq) = carbon();
@@ -630,35 +630,115 @@ fn fixed_edge_panels_match_the_search() {
     ];
     for k in cases {
         let search = panels(&k, 1e-12, 1e-10).unwrap();
-        let fixed = panels_at_edge(&k, search.edge(), search.numerical_error(), 1e-10).unwrap();
-        let d = crate::problem::traction_distance(&fixed, &search);
-        assert!(fixed.traction_error() <= 1e-10);
-        assert!(
-            d <= fixed.traction_error() + search.traction_error(),
-            "{k:?}: {d:e}"
-        );
-        let worst = check_solution(&k, &fixed);
-        let e = search.edge();
-        let moved = if e.c < 0.5 {
-            StickEdge::from_c(e.c + 1e-9)
-        } else {
-            StickEdge::from_one_minus_c(e.one_minus_c - 1e-9)
+        for at in [Sensitivity::AtFirstOrder, Sensitivity::AtFinalOrder] {
+            let fixed =
+                panels_at_edge(&k, search.edge(), search.numerical_error(), 1e-10, at).unwrap();
+            let d = crate::problem::traction_distance(&fixed, &search);
+            assert!(fixed.traction_error() <= 1e-10);
+            assert!(
+                d <= fixed.traction_error() + search.traction_error(),
+                "{k:?}: {d:e}"
+            );
+            let worst = check_solution(&k, &fixed);
+            let e = search.edge();
+            let moved = if e.c < 0.5 {
+                StickEdge::from_c(e.c + 1e-9)
+            } else {
+                StickEdge::from_one_minus_c(e.one_minus_c - 1e-9)
+            };
+            let off = panels_at_edge(&k, moved, 1e-9, 1e-6, at).unwrap();
+            assert!(off.traction_error() <= 1e-6);
+            let d_off = crate::problem::traction_distance(&off, &search);
+            assert!(
+                d_off <= off.traction_error(),
+                "{k:?}: moved {d_off:e} > {:e}",
+                off.traction_error()
+            );
+            println!(
+                "{k:?} {at:?}: order {} vs {}, distance {d:.1e} (estimates {:.1e}, {:.1e}), \
+                 residual {worst:.1e}; moved by 1e-9: distance {d_off:.1e}, estimate {:.1e}",
+                fixed.order(),
+                search.order(),
+                fixed.traction_error(),
+                search.traction_error(),
+                off.traction_error()
+            );
+        }
+    }
+}
+
+/// Issue 8, point 4: where an independent solver reported the admissible solution lost at
+/// large b* and friction (THEORY.md section 8: beyond mu~ ~ 30-100 at b* = 0.83-0.9 its first
+/// root had p < 0, c ~ 0.999), the admissible root is there and is the first one: the defect
+/// at order 13, scanned in lc = ln(c / (1 - c)) from c = 2e-9 to 1 - c = 1e-7 in steps of
+/// 0.1, changes sign upwards first at COUPLED's c, whose solution is admissible, and the later
+/// roots (at 1 - c ~ 1e-4 .. 1e-3 and ~ 1e-6 .. 1e-8) have p < 0 near the punch edge: a search
+/// that starts near c = 1, as Goodman's c suggests there, meets one of those.
+#[test]
+fn later_roots_are_the_inadmissible_ones() {
+    for (b, m) in [(0.83, 100.0), (0.9, 100.0), (0.9, 1e3)] {
+        let k = Coupling {
+            bp: b,
+            bq: b,
+            mu: m,
         };
-        let off = panels_at_edge(&k, moved, 1e-9, 1e-6).unwrap();
-        let d_off = crate::problem::traction_distance(&off, &search);
-        assert!(
-            d_off <= off.traction_error(),
-            "{k:?}: moved {d_off:e} > {:e}",
-            off.traction_error()
-        );
+        let s = solve_to(&k, 1e-10, 1e-10).unwrap();
+        let (consts, _) = reduced_constants(&k);
+        let n = 13;
+        let fams = Families::new(consts.g, n);
+        let defect = |lc: f64| {
+            let (c, w) = edge_of(lc);
+            let layout = Layout::for_edge(c, w);
+            let d = solve_fixed(
+                consts,
+                c,
+                w,
+                n,
+                &fams,
+                &layout,
+                2.0,
+                &mut Default::default(),
+                None,
+            )
+            .unwrap();
+            (d.defect, d)
+        };
+        let mut roots = Vec::new();
+        let mut last = defect(-20.0);
+        let mut lc = -20.0;
+        while lc < 16.0 {
+            let next_lc = lc + 0.1;
+            let next = defect(next_lc);
+            if last.0.signum() != next.0.signum() {
+                // bisected to 1e-6 in lc
+                let (mut a, mut z) = (lc, next_lc);
+                while z - a > 1e-6 {
+                    let mid = 0.5 * (a + z);
+                    if defect(mid).0.signum() == last.0.signum() {
+                        a = mid;
+                    } else {
+                        z = mid;
+                    }
+                }
+                let (_, at) = defect(0.5 * (a + z));
+                roots.push((at.mesh.c, last.0 < 0.0, inadmissible(&at, consts.mu)));
+            }
+            (lc, last) = (next_lc, next);
+        }
         println!(
-            "{k:?}: order {} vs {}, distance {d:.1e} (estimates {:.1e}, {:.1e}), residual {worst:.1e}; \
-             moved by 1e-9: distance {d_off:.1e}, estimate {:.1e}",
-            fixed.order(),
-            search.order(),
-            fixed.traction_error(),
-            search.traction_error(),
-            off.traction_error()
+            "b* {b} mu~ {m}: COUPLED c = {:.6}; roots (c, upwards, violation):",
+            s.edge().c
         );
+        for r in &roots {
+            println!("  {:.9} {} {:?}", r.0, r.1, r.2);
+        }
+        let (c0, upwards, violation) = &roots[0];
+        assert!(*upwards && violation.is_none());
+        assert!(
+            (c0 - s.edge().c).abs() < 0.01 * s.edge().c,
+            "first root {c0}"
+        );
+        assert!(roots.len() > 1, "no later root");
+        assert!(roots[1..].iter().all(|r| r.2.is_some()));
     }
 }
