@@ -27,7 +27,7 @@ use std::time::Instant;
 use orthoslip::model_error::{self, Approximation};
 use orthoslip::problem::traction_distance;
 use orthoslip::{
-    Coupling, Error, Material, Method, Profile, StickEdge, coupled, goodman, lcp, spence,
+    Contact, Coupling, Error, Material, Method, Profile, StickEdge, coupled, goodman, lcp, spence,
 };
 use support::parallel;
 use support::plot::{Scale, Series, chart, heatmap};
@@ -45,6 +45,10 @@ const LCP_PANELS: usize = 200;
 /// and the tighter one that checks it.
 const COUPLED_TOL: f64 = 1e-10;
 const TIGHT_TOL: f64 = 1e-12;
+/// The tolerances (on c and on the tractions) at which METHOD_COUPLED and METHOD_AUTO are
+/// also run, on every other row of b* and every third column of mu~, against the map's
+/// COUPLED at `COUPLED_TOL`.
+const SWEEP_TOLS: [f64; 6] = [1e-1, 1e-2, 1e-4, 1e-6, 1e-8, 1e-9];
 /// What one solve gave.
 enum Outcome {
     Solved {
@@ -175,7 +179,20 @@ fn run(method: Method, k: &Coupling, tol: f64) -> Run {
                 solved(s, (0.0, 0.0), Some(n))
             }
             Method::Auto => {
-                return Err(Error::InvalidArgument("AUTO is not mapped".into()));
+                // the reduced coupling's material (delta = 1: b* = (1 - nu) / 2, mu = mu~)
+                let (r, _) = k.reduced();
+                let mut contact =
+                    Contact::new(Material::effective(1.0, 1.0 - 2.0 * r.bp, 1.0, 1.0)?);
+                contact.set_friction(r.mu)?;
+                contact.set_tolerance(tol)?;
+                let s = contact.solve()?;
+                return Ok(Outcome::Solved {
+                    edge: s.edge(),
+                    estimate: s.error_estimate(),
+                    traction_estimate: s.traction_error_estimate(),
+                    iterations: None,
+                    profile: Box::new(AutoAnswer(s)),
+                });
             }
         })
     }));
@@ -193,6 +210,28 @@ fn run(method: Method, k: &Coupling, tol: f64) -> Run {
     Run {
         outcome,
         seconds: start.elapsed().as_secs_f64(),
+    }
+}
+
+/// AUTO's answer as a profile (its method's own, the solution owning it).
+#[derive(Debug)]
+struct AutoAnswer(orthoslip::Solution);
+
+impl Profile for AutoAnswer {
+    fn coupling(&self) -> Coupling {
+        self.0.profile().coupling()
+    }
+
+    fn edge(&self) -> StickEdge {
+        self.0.profile().edge()
+    }
+
+    fn numerical_error(&self) -> f64 {
+        self.0.profile().numerical_error()
+    }
+
+    fn half_line_tractions(&self, x: f64) -> (f64, f64) {
+        self.0.profile().half_line_tractions(x)
     }
 }
 
@@ -270,7 +309,7 @@ fn engineering_scenes() -> orthoslip::Result<Vec<Scene>> {
         "isotropic plane strain nu=0.499".into(),
         Material::plane_strain(e, e, e, e / (2.0 * 1.499), 0.499, 0.499, 0.499)?,
     ));
-    for eps in [1e-2, 1e-4, 1e-6] {
+    for eps in [1e-2, 1e-4, 1e-6, 1e-9, 1e-12] {
         materials.push((
             "auxetic",
             format!("nu=-1+{eps:e} kappa=1"),
@@ -479,6 +518,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .collect();
     let plane = solve_all(&plane_scenes);
     eprintln!("plane: {:.1} s", t0.elapsed().as_secs_f64());
+    tolerance_sweep(&plane, mu_axis.len())?;
+    eprintln!("tolerance sweep: {:.1} s", t0.elapsed().as_secs_f64());
     let mut engineering_list: Vec<Scene> = b_axis
         .iter()
         .map(|&b| Scene {
@@ -624,6 +665,97 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         "wrote docs/stability_map.csv and docs/stability_*.svg in {:.1} s",
         t0.elapsed().as_secs_f64()
     );
+    Ok(())
+}
+
+/// METHOD_COUPLED and METHOD_AUTO at every tolerance of `SWEEP_TOLS` (c and tractions) on a
+/// sub-grid of the plane (every other b*, every third mu~), against the plane's COUPLED run
+/// at `COUPLED_TOL`: writes docs/stability_tolerances.csv and prints, per method and
+/// tolerance, the failures, the answers whose estimates exceed the tolerance, and those whose
+/// true errors exceed their estimates beyond the reference's (c: `COUPLED_TOL`; tractions: its
+/// traction estimate).
+fn tolerance_sweep(plane: &[Solved], n_mu: usize) -> std::io::Result<()> {
+    let picks: Vec<&Solved> = plane
+        .iter()
+        .enumerate()
+        .filter(|(i, _)| (i / n_mu).is_multiple_of(2) && (i % n_mu).is_multiple_of(3))
+        .map(|(_, s)| s)
+        .collect();
+    let jobs: Vec<(usize, Method, f64)> = (0..picks.len())
+        .flat_map(|p| {
+            SWEEP_TOLS
+                .iter()
+                .flat_map(move |&t| [Method::Coupled, Method::Auto].map(|m| (p, m, t)))
+        })
+        .collect();
+    let runs = parallel::map(&jobs, |&(p, m, t)| run(m, &picks[p].scene.k, t));
+    let mut csv = String::from(
+        "b_star,mu_tilde,method,tolerance,status,c,one_minus_c,estimate,true_error,\
+         traction_estimate,traction_true_error,seconds,message\n",
+    );
+    // per (method, tolerance): runs, failures, estimates above the tolerance, misses
+    let mut tally: BTreeMap<(&str, String), [usize; 4]> = BTreeMap::new();
+    for (&(p, m, t), r) in jobs.iter().zip(&runs) {
+        let s = picks[p];
+        let reference = s.coupled();
+        let err = r.edge().zip(reference.edge()).map(|(a, b)| a.distance(b));
+        let t_err = r
+            .profile()
+            .zip(reference.profile())
+            .map(|(a, b)| traction_distance(a, b));
+        let (estimate, t_est) = match &r.outcome {
+            Outcome::Solved {
+                estimate,
+                traction_estimate,
+                ..
+            } => (Some(*estimate), Some(*traction_estimate)),
+            Outcome::Failed { .. } => (None, None),
+        };
+        let over = estimate.zip(t_est).is_some_and(|(e, te)| e > t || te > t);
+        let missed = estimate.zip(err).is_some_and(|(e, x)| x > e + COUPLED_TOL)
+            || t_est
+                .zip(t_err)
+                .zip(reference.traction_estimate())
+                .is_some_and(|((e, x), slack)| x > e + slack);
+        let counts = tally
+            .entry((method_name(m), format!("{t:.0e}")))
+            .or_default();
+        counts[0] += 1;
+        counts[1] += usize::from(estimate.is_none());
+        counts[2] += usize::from(over);
+        counts[3] += usize::from(missed);
+        let opt = |v: Option<f64>| v.map_or(String::new(), |v| format!("{v:e}"));
+        let message = match &r.outcome {
+            Outcome::Failed { message, .. } => message.replace('"', "'"),
+            Outcome::Solved { .. } => String::new(),
+        };
+        let _ = writeln!(
+            csv,
+            "{:e},{:e},{},{t:e},{},{},{},{},{},{},{},{:.3e},\"{message}\"",
+            s.scene.b_star(),
+            s.scene.mu_tilde(),
+            method_name(m),
+            r.status(),
+            opt(r.edge().map(|e| e.c)),
+            opt(r.edge().map(|e| e.one_minus_c)),
+            opt(estimate),
+            opt(err),
+            opt(t_est),
+            opt(t_err),
+            r.seconds,
+        );
+    }
+    std::fs::write("docs/stability_tolerances.csv", csv)?;
+    println!(
+        "== tolerance sweep: {} plane points (every other b*, every third mu~)",
+        picks.len()
+    );
+    for ((m, t), [n, failed, over, missed]) in tally {
+        println!(
+            "{m:8} tol {t}: {failed} of {n} failed, {over} estimates above the tolerance, {missed} \
+             true errors above the estimates"
+        );
+    }
     Ok(())
 }
 
