@@ -118,3 +118,38 @@ fn extrapolated_large_friction_is_admissible() {
     }
     assert!(bad.is_empty(), "{}", bad.join("\n"));
 }
+
+/// Near b* = 1, where COUPLED extrapolates c in 1 - b* (the auxetic limit,
+/// `coupled/auxetic.rs`; s = 1 - b* = 1e-6 and 1e-8, tolerance 1e-6, which the conditioning
+/// there still allows): every OK answer is admissible too, and c grows with mu.
+#[test]
+fn auxetic_answers_are_admissible() {
+    let mut bad = Vec::new();
+    let mut answered = 0;
+    for s in [1e-6, 1e-8] {
+        let m = Material::effective(1.0, -1.0 + 2.0 * s, 1.0, 1.0).unwrap();
+        let mut last = 0.0;
+        for mu in [0.3, 3.0, 30.0, 1e3] {
+            let mut contact = Contact::new(m);
+            contact.set_friction(mu).unwrap();
+            contact.set_method(Method::Coupled);
+            contact.set_tolerance(1e-6).unwrap();
+            let Ok(sol) = contact.solve() else {
+                continue;
+            };
+            answered += 1;
+            let scene = format!("b* = 1 - {s:e}, mu~ = {mu}");
+            bad.extend(violations(&sol, &scene));
+            if sol.c() < last - sol.error_estimate() {
+                bad.push(format!(
+                    "{scene}: c = {} below {last} at smaller mu",
+                    sol.c()
+                ));
+            }
+            last = sol.c();
+        }
+    }
+    println!("{answered} COUPLED answers checked near b* = 1");
+    assert!(answered >= 6, "only {answered} answers");
+    assert!(bad.is_empty(), "{}", bad.join("\n"));
+}

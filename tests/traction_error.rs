@@ -7,8 +7,12 @@
 use orthoslip::problem::traction_distance;
 use orthoslip::{Contact, Coupling, Material, Method, Profile, coupled};
 
-/// Reduced scenes (b*, mu~): `effective(1, 1 - 2 b*, 1, 1)` with mu = mu~.
-const B_STAR: [f64; 6] = [0.1, 0.2, 0.3, 0.5, 0.7, 0.9];
+/// Reduced scenes (b*, mu~): `effective(1, 1 - 2 b*, 1, 1)` with mu = mu~. From b* = 0.15 on:
+/// at b* = 0.1 the slip zones of mu~ >= 5 (1 - c ~ 1e-18 .. 1e-20) are the bonded limit's at
+/// these tolerances, and their 1e-12 references took 4.3 of the test's 5.7 minutes; that
+/// limit is checked against the panels in `coupled::tests` (thin_slip_zone_*) and
+/// `coupled::near_bonded::tests`.
+const B_STAR: [f64; 6] = [0.15, 0.2, 0.3, 0.5, 0.7, 0.9];
 const MU_TILDE: [f64; 6] = [0.05, 0.2, 1.0, 5.0, 30.0, 100.0];
 
 fn reduced(b: f64) -> Material {

@@ -545,13 +545,15 @@ fn thinnest_slip_zone_meets_1e_10() {
     );
 }
 
-/// Thin slip zones at large friction (b* = 0.1, mu~ = 1e6, g = 3e-6, 1 - c = 1.4e-20): the
+/// Thin slip zones at large friction (b* = 0.12, mu~ = 1e6, g = 2.7e-6, 1 - c = 5.4e-17): the
 /// panels' root search fails there, and the extrapolation in 1/mu~ from the panels at mu~ =
-/// 530, 1061 and 2122 meets 1e-10 ([`thin_slip_zone`]: inside the near-bonded law's window,
-/// within 3 sqrt(1 - c) of the bonded tractions).
+/// 442, 884 and 1768 meets 1e-10 ([`thin_slip_zone`]: inside the near-bonded law's window,
+/// within 3 sqrt(1 - c) of the bonded tractions). The thinnest such zones, b* = 0.1 (1 - c =
+/// 1.4e-20, nodes at 530 .. 2122), take 5 minutes on this machine (about 100 s per node):
+/// the stability map checks them, at 1e-10 and against 1e-12, rather than every test run.
 #[test]
 fn thin_slip_zone_at_large_friction() {
-    let (_, s, _, _) = thin_slip_zone(0.1, 1e6);
+    let (_, s, _, _) = thin_slip_zone(0.12, 1e6);
     assert!(
         matches!(s.regime, Regime::LargeFriction(_)),
         "{:?}",
