@@ -277,7 +277,8 @@ fn traction_tolerance_is_set_apart_from_the_tolerance() {
     assert_eq!(s.method(), Method::Spence);
 }
 
-/// The method's name as the CLI prints it.
+/// The method's name as the CLI should print it (spelled out here rather than taken from the
+/// CLI's own table, so that the tests check its spelling).
 fn method_name(m: Method) -> &'static str {
     match m {
         Method::Auto => "auto",

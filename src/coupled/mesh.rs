@@ -125,8 +125,9 @@ impl Basis {
 /// 0.9999 and 0.99995 (orders up to 34), the log weights meet 1e-10 at order 19 (6.5e-12 ..
 /// 9.6e-11); on 17 scenes with g = 1e-3 .. 1e-2 (b* = 0.15 .. 0.99, tolerance 1e-10) the two
 /// bases agree on c within their estimates, or to 2.5e-14 (b* = 0.99, mu~ = 35, estimates
-/// 2.0e-14 together), and both meet the traction tolerance. Above it the power weights, which the field takes as Jacobi weights
-/// (the log-weighted panels it resamples, `coupled::expansion`).
+/// 2.0e-14 together), and both meet the traction tolerance. Above it the power weights,
+/// which the field takes as Jacobi weights (the log-weighted panels it resamples,
+/// `coupled::expansion`).
 pub(crate) const LOG_BELOW: f64 = 1e-2;
 
 /// `count` functions of one basis on a panel.

@@ -1245,17 +1245,14 @@ fn panels_from(
             lower: lower.discrete,
             upper: root.discrete.clone(),
         };
-        if close || last || drifted {
-            let traction_error = pair.traction_error(delta);
-            if (close && traction_error <= traction_tol) || last || drifted {
-                // met, or the best this search reaches (the callers compare its estimates
-                // with what they were asked for)
-                let pair = match best {
-                    Some(b) if !close && b.gap < pair.gap => b,
-                    _ => pair,
-                };
-                return Ok(pair.solution(k, delta));
-            }
+        if last || drifted || (close && pair.traction_error(delta) <= traction_tol) {
+            // met, or the best this search reaches (the callers compare its estimates with
+            // what they were asked for)
+            let pair = match best {
+                Some(b) if !close && b.gap < pair.gap => b,
+                _ => pair,
+            };
+            return Ok(pair.solution(k, delta));
         }
         if best.as_ref().is_none_or(|b| pair.gap < b.gap) {
             best = Some(pair);
