@@ -34,7 +34,7 @@ struct Scene {
 
 /// Scenes at the corners of the reduced plane (THEORY.md section 4: the material
 /// `effective(1, 1 - 2 b*, 1, 1)` with mu = mu~): (b*, mu~, what is extreme there).
-const CORNERS: [(f64, f64, &str); 7] = [
+const CORNERS: [(f64, f64, &str); 8] = [
     (0.3, 0.01, "stick zone c ~ 1e-21 (full slip)"),
     (0.02, 1.0, "slip zones 1 - c ~ 4e-53 (near-bonded)"),
     (0.2, 5.0, "slip zones 1 - c ~ 8e-9"),
@@ -42,6 +42,11 @@ const CORNERS: [(f64, f64, &str); 7] = [
     (0.83, 1e3, "large friction at large b*, g = 4e-4"),
     (0.99, 30.0, "b* -> 1"),
     (0.99995, 10.0, "auxetic extreme, nu = -0.9999"),
+    (
+        0.999999,
+        10.0,
+        "auxetic limit, 1 - b* = 1e-6 (c extrapolated in b*)",
+    ),
 ];
 
 fn corner_scenes() -> Vec<Scene> {
