@@ -34,6 +34,7 @@ pub(crate) mod field;
 pub mod coupled;
 pub mod goodman;
 pub mod lcp;
+pub(crate) mod spectral;
 pub mod spence;
 
 // The C ABI: its exported functions are the C API, nothing in it is Rust API.

@@ -120,6 +120,10 @@ impl Expand for CoupledSolution {
     fn expansion(&self) -> Expansion {
         match &self.regime {
             Regime::Panels(d) => from_discrete(d, self.delta),
+            Regime::Spectral(_) => {
+                let g = self.coupling.reduced().0.edge_exponent();
+                sample(self, Exponents { edge: g, stick: g })
+            }
             Regime::Uncoupled(g) | Regime::Tabulated(g) => g.expansion(),
             Regime::FullSlip(f) => f.expansion(),
             Regime::NearBonded(b) => b.expansion(),

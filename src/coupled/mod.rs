@@ -82,6 +82,7 @@ use crate::numerics::lstsq::LeastSquares;
 use crate::numerics::quadrature::gauss_legendre_nodes;
 use crate::numerics::roots::brent;
 use crate::problem::{Coupling, Profile, StickEdge, validate_tolerance};
+use crate::spectral::Spectral;
 use full_slip::FullSlip;
 use large_friction::{LargeFriction, MU_EXTRAPOLATE};
 use mesh::{Layout, Mesh, Pt};
@@ -281,6 +282,8 @@ enum Regime {
     Frictionless,
     /// The panel discretisation of the coupled equations.
     Panels(Discrete),
+    /// The global bases per zone ([`crate::spectral`]).
+    Spectral(Box<Spectral>),
     /// bp = 0: p = p0 exactly, so Goodman's closed form is the exact solution.
     Uncoupled(GoodmanSolution),
     /// A stick zone below the tolerance: the full-slip limit ([`full_slip`]).
@@ -301,10 +304,26 @@ impl CoupledSolution {
         self.order
     }
 
+    /// The regime that answered: "frictionless", "panels", "spectral", "uncoupled",
+    /// "full slip", "near bonded", "large friction" or "tabulated" (docs/theory.md).
+    pub fn regime(&self) -> &'static str {
+        match &self.regime {
+            Regime::Frictionless => "frictionless",
+            Regime::Panels(_) => "panels",
+            Regime::Spectral(_) => "spectral",
+            Regime::Uncoupled(_) => "uncoupled",
+            Regime::FullSlip(_) => "full slip",
+            Regime::NearBonded(_) => "near bonded",
+            Regime::LargeFriction(_) => "large friction",
+            Regime::Tabulated(_) => "tabulated",
+        }
+    }
+
     /// Number of unknowns of the returned discretisation (0 without one).
     pub fn unknowns(&self) -> usize {
         match &self.regime {
             Regime::Panels(d) => d.mesh.unknowns,
+            Regime::Spectral(s) => s.unknowns(),
             Regime::LargeFriction(l) => l.unknowns(),
             _ => 0,
         }
@@ -347,6 +366,10 @@ impl Profile for CoupledSolution {
             Regime::Frictionless => (crate::goodman::p0(x), 0.0),
             Regime::Panels(d) => {
                 let (p, q) = d.eval(Pt { x, u: 1.0 - x });
+                (p, self.delta * q)
+            }
+            Regime::Spectral(s) => {
+                let (p, q) = s.half_line_tractions(x);
                 (p, self.delta * q)
             }
             Regime::Uncoupled(g) => g.half_line_tractions(x),
@@ -759,6 +782,9 @@ pub fn solve(k: &Coupling, tol: f64) -> Result<CoupledSolution> {
     if let Some(s) = limit_regime(k, tol, tol) {
         return Ok(s);
     }
+    if let Some(s) = spectral_from_table(k, tol, f64::INFINITY) {
+        return Ok(s);
+    }
     let s = panel_regimes(k, tol, f64::INFINITY)?;
     if s.error > tol {
         return Err(not_met(s.error, tol, &s));
@@ -802,6 +828,23 @@ const CONDITIONING_NOTE_BELOW: f64 = 1e-3;
 /// traction_tol re-run with the tolerance on c scaled down by the ratio missed (twice over),
 /// down to [`TIGHTEST`], unless they stopped at their largest order ([`at_largest_order`]).
 pub fn solve_to(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSolution> {
+    solve_with(k, tol, traction_tol, true)
+}
+
+/// [`solve_to`] without the spectral solver in front of the panels: the fallback alone, for
+/// the comparisons of `examples/spectral_timing.rs` and the tests.
+#[doc(hidden)]
+pub fn solve_panels_to(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSolution> {
+    solve_with(k, tol, traction_tol, false)
+}
+
+/// [`solve_to`], the spectral solver tried first where `spectral`.
+fn solve_with(
+    k: &Coupling,
+    tol: f64,
+    traction_tol: f64,
+    spectral: bool,
+) -> Result<CoupledSolution> {
     k.validate()?;
     validate_tolerance(tol)?;
     if let Some(s) = limit_regime(k, tol, traction_tol) {
@@ -810,6 +853,9 @@ pub fn solve_to(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSolu
     if traction_tol == f64::INFINITY
         && let Some(s) = tabulated(k, tol)
     {
+        return Ok(s);
+    }
+    if spectral && let Some(s) = spectral_from_table(k, tol, traction_tol) {
         return Ok(s);
     }
     let tol_asked = tol;
@@ -845,6 +891,35 @@ pub fn solve_to(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSolu
         }
         tol = (0.5 * tol * traction_tol / e).min(0.1 * tol).max(TIGHTEST);
     }
+}
+
+/// The spectral solver ([`crate::spectral`]) started from the tabulated stick edge, where the
+/// table covers the reduced coupling below [`MU_EXTRAPOLATE`]; None where it does not meet
+/// the tolerances (the panels answer there).
+fn spectral_from_table(k: &Coupling, tol: f64, traction_tol: f64) -> Option<CoupledSolution> {
+    if k.bp == 0.0 {
+        return None;
+    }
+    let (r, delta) = k.reduced();
+    if r.mu >= MU_EXTRAPOLATE {
+        return None;
+    }
+    let (lc, _) = crate::stick_edge_table::lookup(r.bp, r.mu)?;
+    let consts = crate::spectral::Constants {
+        b: r.bp,
+        mu: r.mu,
+        g: r.edge_exponent(),
+    };
+    let s = crate::spectral::solve(consts, lc, tol, traction_tol, delta)?;
+    Some(CoupledSolution {
+        coupling: *k,
+        edge: s.edge,
+        error: s.error,
+        traction_error: s.traction_parts.0 + delta * s.traction_parts.1,
+        delta,
+        order: s.level,
+        regime: Regime::Spectral(Box::new(s)),
+    })
 }
 
 /// The closed-form regimes, where they meet the tolerances: mu = 0 (p = p0, q = 0), bp = 0

@@ -744,3 +744,26 @@ fn later_roots_are_the_inadmissible_ones() {
         assert!(roots[1..].iter().all(|r| r.2.is_some()));
     }
 }
+
+/// The spectral solver (global bases per zone) against the panels, an independent
+/// discretisation, on mid-range scenes of the reduced plane: c and the tractions within the
+/// sum of both solutions' estimates, and the spectral solver is the one that answers there.
+#[test]
+fn spectral_agrees_with_the_panels() {
+    for (b, mu) in [(0.3, 0.5), (0.7, 0.2), (0.5, 3.0)] {
+        let k = Coupling { bp: b, bq: b, mu };
+        let s = solve_to(&k, 1e-10, 1e-8).expect("spectral");
+        assert_eq!(s.regime(), "spectral", "({b}, {mu})");
+        let p = solve_panels_to(&k, 1e-10, 1e-8).expect("panels");
+        assert_eq!(p.regime(), "panels", "({b}, {mu})");
+        let dc = s.edge().distance(p.edge());
+        let dt = crate::problem::traction_distance(&s, &p);
+        assert!(dc <= s.error + p.error, "({b}, {mu}): c apart by {dc:e}");
+        assert!(
+            dt <= s.traction_error + p.traction_error,
+            "({b}, {mu}): tractions apart by {dt:e} (estimates {:e}, {:e})",
+            s.traction_error,
+            p.traction_error
+        );
+    }
+}

@@ -28,6 +28,12 @@ pub(crate) struct LeastSquares {
 }
 
 impl LeastSquares {
+    /// A solver that goes to the column-pivoted QR directly (frames whose near-dependent
+    /// columns are the rule, not the exception).
+    pub(crate) fn pivoted() -> Self {
+        LeastSquares { pivot: true }
+    }
+
     /// x minimising ||A x - b||, A given row-major with n columns (and b.len() rows).
     pub(crate) fn solve(&mut self, a: &[f64], n: usize, b: &[f64]) -> Vec<f64> {
         let a = MatRef::from_row_major_slice(a, b.len(), n);

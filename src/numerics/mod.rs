@@ -2,6 +2,7 @@
 //! polynomials, Gauss quadrature, Cauchy transforms of weighted polynomials and root finding.
 
 pub(crate) mod cauchy;
+pub(crate) mod jacobi_transform;
 pub(crate) mod lstsq;
 pub(crate) mod orthopoly;
 pub(crate) mod quadrature;

@@ -230,7 +230,7 @@ pub(crate) struct Hyp2f1 {
     a: f64,
     b: f64,
     e: f64,
-    near_one: std::cell::OnceCell<NearOne>,
+    near_one: std::sync::OnceLock<NearOne>,
 }
 
 /// The constants of the expansion about z = 1 (DLMF 15.8.4, see [`Hyp2f1::near_one`]).
@@ -250,7 +250,7 @@ impl Hyp2f1 {
             a,
             b,
             e,
-            near_one: std::cell::OnceCell::new(),
+            near_one: std::sync::OnceLock::new(),
         }
     }
 
@@ -346,6 +346,22 @@ impl Hyp2f1 {
         }
         (k.prefactor * sum, k.prefactor * z * slope)
     }
+}
+
+/// 2F1(a, b; c; z) by its power series (DLMF 15.2.1) for any real a, b and c not a
+/// non-positive integer, |z| <= 1/2 (at most [`MAX_TERMS`] terms; about 55 at |z| = 1/2).
+pub(crate) fn hyp2f1_series(a: f64, b: f64, c: f64, z: f64) -> f64 {
+    debug_assert!(z.abs() <= 0.5 + 1e-12);
+    let (mut term, mut sum) = (1.0, 1.0);
+    for n in 0..MAX_TERMS {
+        let n = n as f64;
+        term *= (a + n) * (b + n) / ((c + n) * (n + 1.0)) * z;
+        sum += term;
+        if term.abs() <= SERIES_TOL * sum.abs() {
+            break;
+        }
+    }
+    sum
 }
 
 /// 2F1(a, b; a + b + e; z) alone (see [`Hyp2f1`]).

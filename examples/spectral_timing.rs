@@ -1,0 +1,118 @@
+//! COUPLED's spectral solver (global bases per zone, docs/theory_spectral.md) against the
+//! panels alone, on the 12 scenes of examples/speed_accuracy.rs, in one run: per scene the
+//! regime that answered, the unknowns, the time per solve (median of repeated solves, wall
+//! time) and the distance between the two answers' c and tractions; then the medians and
+//! their ratio. Writes docs/spectral_timing.md.
+//!
+//! `cargo run --release --example spectral_timing`
+use std::time::{Duration, Instant};
+
+use orthoslip::coupled::{CoupledSolution, solve_panels_to, solve_to};
+use orthoslip::problem::{Profile, traction_distance};
+use orthoslip::{Material, Result};
+
+fn materials() -> Vec<(&'static str, Material)> {
+    vec![
+        (
+            "carbon/epoxy ply",
+            Material::plane_stress(181e9, 10.3e9, 7.17e9, 0.28).unwrap(),
+        ),
+        (
+            "isotropic steel, plane strain",
+            Material::plane_strain(210e9, 210e9, 210e9, 210e9 / 2.6, 0.3, 0.3, 0.3).unwrap(),
+        ),
+        (
+            "kappa = 0.4 < 1 (complex roots)",
+            Material::effective(1.0, 0.25, 1.3, 0.4).unwrap(),
+        ),
+        (
+            "strongly orthotropic, delta = 10",
+            Material::effective(1.0, 0.1, 10.0, 3.0).unwrap(),
+        ),
+    ]
+}
+
+/// Median wall time over repeated solves (at least 5 runs and 0.3 s, at most 200).
+fn time(f: impl Fn() -> Result<CoupledSolution>) -> (Duration, Result<CoupledSolution>) {
+    let mut times = Vec::new();
+    let start = Instant::now();
+    let mut last = f();
+    while times.len() < 5 || (start.elapsed() < Duration::from_millis(300) && times.len() < 200) {
+        let t = Instant::now();
+        last = f();
+        times.push(t.elapsed());
+    }
+    times.sort();
+    (times[times.len() / 2], last)
+}
+
+fn median(mut v: Vec<f64>) -> f64 {
+    v.sort_by(f64::total_cmp);
+    let n = v.len();
+    if n % 2 == 1 {
+        v[n / 2]
+    } else {
+        0.5 * (v[n / 2 - 1] + v[n / 2])
+    }
+}
+
+fn main() {
+    let mut out = String::from(
+        "# COUPLED: spectral solver against the panels\n\n\
+         Written by `cargo run --release --example spectral_timing` (one run, both solvers \
+         timed alternately on the same machine; wall time, median of repeated solves).\n\n",
+    );
+    for (tol, ttol) in [(1e-10, 1e-8), (1e-10, 1e-10)] {
+        out += &format!(
+            "## c to {tol:.0e}, tractions to {ttol:.0e}\n\n| scene | spectral: regime, unknowns | time | panels: unknowns | time | ratio | c distance | traction distance |\n|---|---|---|---|---|---|---|---|\n"
+        );
+        let (mut ts, mut tp) = (Vec::new(), Vec::new());
+        for (name, m) in materials() {
+            for mu in [0.1, 0.3, 1.0] {
+                let k = m.coupling(mu);
+                let (a, sa) = time(|| solve_to(&k, tol, ttol));
+                let (b, sb) = time(|| solve_panels_to(&k, tol, ttol));
+                let (a, b) = (a.as_secs_f64(), b.as_secs_f64());
+                let row = match (&sa, &sb) {
+                    (Ok(s), Ok(p)) => {
+                        ts.push(a);
+                        tp.push(b);
+                        format!(
+                            "| {name}, mu = {mu} | {}, {} | {:.3} ms | {} | {:.3} ms | {:.2} | {:.1e} | {:.1e} |",
+                            s.regime(),
+                            s.unknowns(),
+                            1e3 * a,
+                            p.unknowns(),
+                            1e3 * b,
+                            b / a,
+                            s.edge().distance(p.edge()),
+                            traction_distance(s, p)
+                        )
+                    }
+                    _ => format!(
+                        "| {name}, mu = {mu} | {:?} | | {:?} | | | | |",
+                        sa.as_ref().map(|s| s.regime()).map_err(|e| e.to_string()),
+                        sb.as_ref().map(|s| s.unknowns()).map_err(|e| e.to_string())
+                    ),
+                };
+                println!("{row}");
+                out += &row;
+                out += "\n";
+            }
+        }
+        let (ms, mp) = (median(ts), median(tp));
+        let line = format!(
+            "\nMedian over the scenes: COUPLED (spectral first) {:.3} ms, panels alone {:.3} ms (ratio {:.2}).\n\n",
+            1e3 * ms,
+            1e3 * mp,
+            mp / ms
+        );
+        print!("{line}");
+        out += &line;
+    }
+    std::fs::write(
+        concat!(env!("CARGO_MANIFEST_DIR"), "/docs/spectral_timing.md"),
+        out,
+    )
+    .expect("docs/spectral_timing.md");
+}

@@ -1,0 +1,508 @@
+//! Finite Hilbert (Cauchy) transforms of Jacobi-weighted orthonormal Jacobi polynomials, for
+//! any exponents a, b in (-1, 1) with a + b > -1, at any real point off the interval ends:
+//!
+//!   T_k(y) = (1/pi) PV int_{-1}^{1} w(t) p_k(t) / (t - y) dt,   w(t) = (1 - t)^a (1 + t)^b,
+//!
+//! p_k the orthonormal Jacobi polynomials of [`JacobiRecurrence`] (p_0 = 1). The finite
+//! Hilbert transform of the docs' convention is H = -T (docs/theory_spectral.md, (J1)).
+//!
+//! - T_0 in closed form (docs/theory_spectral.md, (J2)-(J4)): inside (-1, 1) Tricomi's
+//!   cot(pi a) w(y) - K_0 2F1(1, -a-b; 1-a; (1-y)/2); outside, the Stieltjes transform of the
+//!   weight, -(mu_0 / pi) 2F1(1, b+1; a+b+2; 2/(1+y)) / (1 + y) for y > 1, and the reflection
+//!   T^(a,b)(y) = -T^(b,a)(-y) for the left half. Every 2F1 is evaluated at an argument
+//!   <= 1/2 by its series, or near 1 by [`Hyp2f1`] (after Euler's transformation where its
+//!   exponent c - a - b is negative), with 1 - z formed from the offsets 1 -+ y the caller
+//!   gives to full accuracy.
+//! - T_k, k >= 1, by the three-term recurrence of the p_k with the moment int w p_k =
+//!   mu_0 delta_k0 as its inhomogeneity (J5): forward inside the interval and close to it
+//!   (up to a loss of e^3 in relative accuracy), else backward as a ratio recurrence (Miller's
+//!   algorithm: outside, T_k is the minimal solution, decaying like rho^-k with
+//!   rho = |y| + sqrt(y^2 - 1)), normalised by T_0.
+//! - Poles: the transform of w(t) / (z - t) for z outside [-1, 1] is the divided difference
+//!   (T_0(y) - T_0(z)) / (z - y) (J6), and its integral is -pi T_0(z).
+
+use std::f64::consts::PI;
+
+use super::orthopoly::{JacobiRecurrence, jacobi_mass};
+use super::special::{Hyp2f1, hyp2f1_series, tan_pi};
+
+/// A real point y with its offsets 1 - y and 1 + y, each to full relative accuracy.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) struct Point {
+    pub(crate) y: f64,
+    pub(crate) omy: f64,
+    pub(crate) opy: f64,
+}
+
+impl Point {
+    /// The point y (its offsets as rounded from y; use [`Point::offsets`] near the ends).
+    #[cfg(test)]
+    pub(crate) fn new(y: f64) -> Self {
+        Point {
+            y,
+            omy: 1.0 - y,
+            opy: 1.0 + y,
+        }
+    }
+
+    /// The point with the given offsets 1 - y and 1 + y (y from the smaller one).
+    pub(crate) fn offsets(omy: f64, opy: f64) -> Self {
+        let y = if omy.abs() < opy.abs() {
+            1.0 - omy
+        } else {
+            opy - 1.0
+        };
+        Point { y, omy, opy }
+    }
+
+    /// -y.
+    pub(crate) fn reflected(self) -> Self {
+        Point {
+            y: -self.y,
+            omy: self.opy,
+            opy: self.omy,
+        }
+    }
+
+    /// Whether the point lies inside (-1, 1).
+    pub(crate) fn inside(self) -> bool {
+        self.omy > 0.0 && self.opy > 0.0
+    }
+
+    /// ln rho = arcosh |y| for |y| > 1 (0 inside), from the offset |y| - 1.
+    fn ln_rho(self) -> f64 {
+        let d = if self.omy < 0.0 {
+            -self.omy
+        } else if self.opy < 0.0 {
+            -self.opy
+        } else {
+            return 0.0;
+        };
+        (d + (d * (2.0 + d)).sqrt()).ln_1p()
+    }
+}
+
+/// Relative accuracy lost at most by the forward recurrence outside the interval: it is run
+/// forward while k ln rho <= FORWARD_SPAN (error growth e^(2 k ln rho) <= e^3 = 20).
+const FORWARD_SPAN: f64 = 1.5;
+
+/// Miller's backward recurrence starts this far (in units of 1 / ln rho) above the top
+/// degree: the ratio's error falls like rho^(-2 m), e^-40 = 4e-18 at m ln rho = 20.
+const MILLER_SPAN: f64 = 20.0;
+
+/// The deepest start of the backward recurrence for n functions: it runs backward only where
+/// n ln rho > [`FORWARD_SPAN`], so from at most n + MILLER_SPAN n / FORWARD_SPAN.
+fn deepest(n: usize) -> usize {
+    n + (MILLER_SPAN / FORWARD_SPAN * n as f64).ceil() as usize
+}
+
+/// The family w p_k, k < n, for exponents (a, b).
+#[derive(Clone, Debug)]
+pub(crate) struct JacobiFamily {
+    a: f64,
+    b: f64,
+    n: usize,
+    /// mu_0 = int w.
+    mass: f64,
+    /// The recurrence coefficients, up to the deepest start of the backward recurrence.
+    rec: JacobiRecurrence,
+    /// The hypergeometric functions of T_0 with their constants, for the exponents as given
+    /// and swapped (the reflection).
+    ends: [Ends; 2],
+}
+
+/// The 2F1s of T_0 near z = 1 for one orientation (a, b) of the exponents: Tricomi's inside
+/// (None where it is 1 or not needed) and the outside one (J2)-(J3).
+#[derive(Clone, Debug)]
+struct Ends {
+    inside: Option<Hyp2f1>,
+    outside: Hyp2f1,
+}
+
+impl Ends {
+    fn new(a: f64, b: f64) -> Self {
+        let inside = if a + b == 0.0 {
+            None
+        } else if b == 0.0 && a > 0.0 {
+            Some(Hyp2f1::new(1.0, 1.0 - a, 0.0))
+        } else if -a - b > 0.0 && b >= 0.0 {
+            Some(Hyp2f1::new(1.0, -a - b, b))
+        } else if a < 0.0 && b <= 0.0 {
+            Some(Hyp2f1::new(-a, 1.0 + b, -b))
+        } else {
+            None
+        };
+        let outside = if a >= 0.0 {
+            Hyp2f1::new(1.0, b + 1.0, a)
+        } else {
+            Hyp2f1::new(a + b + 1.0, a + 1.0, -a)
+        };
+        Ends { inside, outside }
+    }
+}
+
+impl JacobiFamily {
+    /// The family of `n` functions for exponents a, b in (-1, 1), a + b > -1 (the integer
+    /// exponent allowed is 0, and at most at one end unless both are 0).
+    pub(crate) fn new(a: f64, b: f64, n: usize) -> Self {
+        debug_assert!(a > -1.0 && a < 1.0 && b > -1.0 && b < 1.0 && a + b > -1.0);
+        debug_assert!(n >= 1);
+        JacobiFamily {
+            a,
+            b,
+            n,
+            mass: jacobi_mass(a, b),
+            rec: JacobiRecurrence::new(deepest(n) + 2, a, b),
+            ends: [Ends::new(a, b), Ends::new(b, a)],
+        }
+    }
+
+    /// Number of functions.
+    pub(crate) fn len(&self) -> usize {
+        self.n
+    }
+
+    /// int w p_k = mu_0 for k = 0 (0 for k >= 1).
+    pub(crate) fn mass(&self) -> f64 {
+        self.mass
+    }
+
+    /// w(y) for y in [-1, 1].
+    pub(crate) fn weight(&self, p: Point) -> f64 {
+        power(p.omy, self.a) * power(p.opy, self.b)
+    }
+
+    /// w(y) p_k(y), k < n, for y in (-1, 1).
+    pub(crate) fn values(&self, p: Point, out: &mut [f64]) {
+        let w = self.weight(p);
+        let r = &self.rec;
+        let (mut prev, mut cur) = (0.0, 1.0);
+        for (k, o) in out.iter_mut().take(self.n).enumerate() {
+            *o = w * cur;
+            if k + 1 < self.n {
+                let back = if k == 0 { 0.0 } else { r.off[k - 1] * prev };
+                let next = ((p.y - r.diag[k]) * cur - back) / r.off[k];
+                (prev, cur) = (cur, next);
+            }
+        }
+    }
+
+    /// T_0(y) (module documentation), y off the interval ends.
+    pub(crate) fn t0(&self, p: Point) -> f64 {
+        let (a, b, mass) = (self.a, self.b, self.mass);
+        if a == 0.0 && b == 0.0 {
+            return (p.omy.abs() / p.opy.abs()).ln() / PI;
+        }
+        let [own, swapped] = &self.ends;
+        if p.inside() {
+            // Tricomi's form needs a non-integer exponent at the end it expands about
+            if a != 0.0 && (p.y >= 0.0 || b == 0.0) {
+                inside(a, b, mass, own, p)
+            } else {
+                -inside(b, a, mass, swapped, p.reflected())
+            }
+        } else if p.omy < 0.0 {
+            right_of(a, mass, own, p)
+        } else {
+            -right_of(b, mass, swapped, p.reflected())
+        }
+    }
+
+    /// T_k(y), k < n (module documentation), y off the interval ends.
+    pub(crate) fn transforms(&self, p: Point, out: &mut [f64]) {
+        let n = self.n;
+        let out = &mut out[..n];
+        out[0] = self.t0(p);
+        if n == 1 {
+            return;
+        }
+        let r = &self.rec;
+        let ln_rho = p.ln_rho();
+        if p.inside() || (n as f64) * ln_rho <= FORWARD_SPAN {
+            let (mut prev, mut cur) = (0.0, out[0]);
+            for k in 0..n - 1 {
+                let back = if k == 0 {
+                    -self.mass / PI
+                } else {
+                    r.off[k - 1] * prev
+                };
+                let next = ((p.y - r.diag[k]) * cur - back) / r.off[k];
+                out[k + 1] = next;
+                (prev, cur) = (cur, next);
+            }
+        } else {
+            // ratios r_k = T_k / T_{k-1} from r_m = 0, m well above n
+            let m = (n + (MILLER_SPAN / ln_rho).ceil() as usize).min(deepest(n));
+            // the ratios r_k = T_k / T_{k-1} from r_m = 0, stored in out[k] for k < n
+            let mut ratio = 0.0;
+            for k in (1..m).rev() {
+                ratio = r.off[k - 1] / ((p.y - r.diag[k]) - r.off[k] * ratio);
+                if k < n {
+                    out[k] = ratio;
+                }
+            }
+            for k in 1..n {
+                out[k] *= out[k - 1];
+            }
+        }
+    }
+}
+
+/// The transform at y of w(t) / (z - t), z outside [-1, 1], from the family's T_0 at y and at
+/// z (J6).
+pub(crate) fn pole_transform(t0_y: f64, y: Point, z: Point, t0_z: f64) -> f64 {
+    (t0_y - t0_z) / (z.y - y.y)
+}
+
+/// x^e for x >= 0, with 0^0 = 1.
+fn power(x: f64, e: f64) -> f64 {
+    if e == 0.0 { 1.0 } else { x.powf(e) }
+}
+
+/// (J2) for |y| < 1, a != 0: cot(pi a) w(y) - K_0 2F1(1, -a-b; 1-a; z), z = (1 - y)/2,
+/// K_0 = mu_0 (a + b + 1) / (2 pi a).
+fn inside(a: f64, b: f64, mass: f64, ends: &Ends, p: Point) -> f64 {
+    let (z, omz) = (0.5 * p.omy, 0.5 * p.opy);
+    let f = if a + b == 0.0 {
+        1.0
+    } else if z <= 0.5 {
+        hyp2f1_series(1.0, -a - b, 1.0 - a, z)
+    } else {
+        let h = ends.inside.as_ref();
+        let h = h.unwrap_or_else(|| panic!("T_0 inside: exponents ({a}, {b}) not covered"));
+        let f = h.eval(z, omz, omz.ln()).0;
+        if b == 0.0 && a > 0.0 {
+            // 2F1(1, -a; 1-a; z) = -a Phi(z, 1, -a) = 1 - a z / (1 - a) 2F1(1, 1-a; 2-a; z),
+            // the last with exponent c - a - b = 0 and positive parameters
+            1.0 - a * z / (1.0 - a) * f
+        } else if -a - b > 0.0 && b >= 0.0 {
+            // c - a - b = b in [0, 1)
+            f
+        } else {
+            // Euler: (1 - z)^b 2F1(-a, 1 + b; 1 - a; z), exponent -b in [0, 1)
+            power(omz, b) * f
+        }
+    };
+    let w = power(p.omy, a) * power(p.opy, b);
+    w / tan_pi(a) - mass * (a + b + 1.0) / (2.0 * PI * a) * f
+}
+
+/// (J3) for y > 1: -(mu_0 / pi) 2F1(1, b+1; a+b+2; zeta) / (1 + y), zeta = 2 / (1 + y).
+fn right_of(a: f64, mass: f64, ends: &Ends, p: Point) -> f64 {
+    let zeta = 2.0 / p.opy;
+    let omz = -p.omy / p.opy;
+    let ln_omz = (-p.omy).ln() - p.opy.ln();
+    let f = ends.outside.eval(zeta, omz, ln_omz).0;
+    // for a < 0 Euler's (1 - zeta)^a 2F1(a+b+1, a+1; a+b+2; zeta), exponent -a in (0, 1)
+    let f = if a >= 0.0 { f } else { (a * ln_omz).exp() * f };
+    -mass / PI * f / p.opy
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::numerics::quadrature::{gauss_jacobi, graded_rule};
+
+    /// T_k at a point outside by a Gauss-Jacobi rule (the integrand is smooth there).
+    fn by_quadrature(a: f64, b: f64, n: usize, y: f64) -> Vec<f64> {
+        let fam = JacobiFamily::new(a, b, n);
+        let (t, w) = gauss_jacobi(200, a, b);
+        let mut out = vec![0.0; n];
+        let mut vals = vec![0.0; n];
+        for (&t, &w) in t.iter().zip(&w) {
+            // values() includes the weight; the rule's weights already carry it
+            fam.values(Point::new(t), &mut vals);
+            let wt = fam.weight(Point::new(t));
+            for k in 0..n {
+                out[k] += w * vals[k] / wt / (t - y) / PI;
+            }
+        }
+        out
+    }
+
+    const WEIGHTS: [(f64, f64); 7] = [
+        (0.0, 0.0),
+        (0.3, 0.0),
+        (0.3, 0.3),
+        (-0.3, 0.3),
+        (-0.3, 0.0),
+        (0.3, -0.3),
+        (0.0, -0.3),
+    ];
+
+    /// Far from the interval (Gauss-Jacobi converges like rho^-400): every family and degree.
+    #[test]
+    fn outside_matches_quadrature() {
+        for (a, b) in WEIGHTS {
+            for y in [1.3, 2.5, 4.0, 30.0, -1.3, -2.5, -7.0] {
+                let fam = JacobiFamily::new(a, b, 24);
+                let mut t = vec![0.0; 24];
+                fam.transforms(Point::new(y), &mut t);
+                let q = by_quadrature(a, b, 24, y);
+                for k in 0..24 {
+                    let err = (t[k] - q[k]).abs() / q[0].abs();
+                    assert!(
+                        err < 1e-13,
+                        "({a}, {b}) y = {y} k = {k}: {} vs {}",
+                        t[k],
+                        q[k]
+                    );
+                }
+            }
+        }
+    }
+
+    /// Inside: the principal value (1/pi) [int (f(t) - f(y)) / (t - y) dt + f(y) ln((1-y)/(1+y))],
+    /// f = w p_k, the regular integral by a rule graded towards the end singularities and
+    /// split at y (it omits 1e-15 of each end: up to ~1e-10 of the integral for a = -0.3).
+    #[test]
+    fn inside_matches_subtracted_quadrature() {
+        for (a, b) in WEIGHTS {
+            let n = 12;
+            let fam = JacobiFamily::new(a, b, n);
+            for y in [-0.9, -0.4, 0.0, 0.35, 0.8, 0.97] {
+                let mut t = vec![0.0; n];
+                fam.transforms(Point::new(y), &mut t);
+                let mut fy = vec![0.0; n];
+                fam.values(Point::new(y), &mut fy);
+                let mut q: Vec<f64> = fy
+                    .iter()
+                    .map(|f| f * ((1.0 - y) / (1.0 + y)).ln())
+                    .collect();
+                let mut f = vec![0.0; n];
+                // in the offsets from the ends (so that the grading reaches 1e-15 of each
+                // piece, not 16 ulps of 1): v = 1 + t on [-1, y], u = 1 - t on [y, 1]
+                let pieces = [(1.0 + y, false), (1.0 - y, true)];
+                for (len, right) in pieces {
+                    for (off, wt) in graded_rule(0.0, len, 0.15, 1e-15, 12) {
+                        let (p, x) = if right {
+                            (Point::offsets(off, 2.0 - off), 1.0 - off)
+                        } else {
+                            (Point::offsets(2.0 - off, off), off - 1.0)
+                        };
+                        fam.values(p, &mut f);
+                        for k in 0..n {
+                            q[k] += wt * (f[k] - fy[k]) / (x - y);
+                        }
+                    }
+                }
+                for k in 0..n {
+                    let err = (t[k] - q[k] / PI).abs() / (1.0 + t[k].abs());
+                    assert!(
+                        err < 1e-9,
+                        "({a}, {b}) y = {y} k = {k}: {} vs {}",
+                        t[k],
+                        q[k] / PI
+                    );
+                }
+            }
+        }
+    }
+
+    /// The weight (1/2, 1/2): p_k = U_k, and T_k = -T_{k+1}(y) (Chebyshev, first kind) inside,
+    /// -(y - sqrt(y^2 - 1))^(k+1) for y > 1; at points next to the ends too.
+    #[test]
+    fn chebyshev_second_kind_closed_form() {
+        let n = 30;
+        let fam = JacobiFamily::new(0.5, 0.5, n);
+        let mut t = vec![0.0; n];
+        for y in [-0.999999, -0.5, 0.1, 0.7, 0.9999999] {
+            fam.transforms(Point::new(y), &mut t);
+            let th = y.acos();
+            for (k, tk) in t.iter().enumerate() {
+                let exact = -((k + 1) as f64 * th).cos();
+                assert!(
+                    (tk - exact).abs() < 1e-12,
+                    "y = {y} k = {k}: {tk} vs {exact}"
+                );
+            }
+        }
+        for d in [1e-12, 1e-8, 1e-4, 0.01, 0.3, 2.0, 50.0] {
+            let p = Point::offsets(-d, 2.0 + d);
+            fam.transforms(p, &mut t);
+            let r = 1.0 + d - (d * (2.0 + d)).sqrt();
+            for (k, tk) in t.iter().enumerate() {
+                let exact = -r.powi(k as i32 + 1);
+                let err = (tk - exact).abs() / exact.abs();
+                assert!(err < 1e-12, "d = {d} k = {k}: {tk} vs {exact}");
+            }
+            // and the mirror point, T(-y) = (-1)^(k+1) T(y) for the symmetric weight
+            let mut m = vec![0.0; n];
+            fam.transforms(p.reflected(), &mut m);
+            for k in 0..n {
+                let sign = if k % 2 == 0 { -1.0 } else { 1.0 };
+                assert!(
+                    (m[k] - sign * t[k]).abs() <= 1e-12 * t[k].abs(),
+                    "mirror d = {d} k = {k}"
+                );
+            }
+        }
+    }
+
+    /// Next to the ends (1 -+ y down to 1e-12, inside and out) T_0 of every family agrees with
+    /// the one-sided closed forms of `numerics::cauchy` where those apply (w = 1, (1 - t)^e,
+    /// (1 + t)^e), and the two-sided ones are continuous in the offsets' rounding.
+    #[test]
+    fn t0_next_to_the_ends_matches_the_one_sided_forms() {
+        use crate::numerics::cauchy::end_cauchy;
+        for e in [0.3, -0.3, -0.45] {
+            let left = JacobiFamily::new(0.0, e, 1);
+            let right = JacobiFamily::new(e, 0.0, 1);
+            for d in [1e-12, 1e-8, 1e-4, 0.05] {
+                // next to the end whose offset end_cauchy takes (it forms 2 - z itself, so
+                // the other end is out of its reach), inside (+d) and outside (-d)
+                for off in [d, -d] {
+                    let p = Point::offsets(2.0 - off, off);
+                    let exact = end_cauchy(e, p.opy) / PI;
+                    let got = left.t0(p);
+                    assert!(
+                        (got - exact).abs() < 1e-13 * (1.0 + exact.abs()),
+                        "(0, {e}) at 1 + y = {off}: {got} vs {exact}"
+                    );
+                    let exact = -end_cauchy(e, p.opy) / PI;
+                    let got = right.t0(p.reflected());
+                    assert!(
+                        (got - exact).abs() < 1e-13 * (1.0 + exact.abs()),
+                        "({e}, 0) at 1 - y = {off}: {got} vs {exact}"
+                    );
+                }
+            }
+        }
+        // the two-sided weights agree with themselves across the point y = 0 where the
+        // evaluation switches ends
+        for (a, b) in [(0.3, 0.3), (-0.3, 0.3), (0.3, -0.3), (-0.3, 0.0)] {
+            let fam = JacobiFamily::new(a, b, 1);
+            let (l, r) = (fam.t0(Point::new(-1e-15)), fam.t0(Point::new(1e-15)));
+            assert!((l - r).abs() < 1e-13, "({a}, {b}): {l} vs {r}");
+        }
+    }
+
+    /// A pole's transform by the divided difference (J6) against quadrature outside.
+    #[test]
+    fn pole_transform_matches_quadrature() {
+        for (a, b) in WEIGHTS {
+            let fam = JacobiFamily::new(a, b, 1);
+            let (t, w) = gauss_jacobi(300, a, b);
+            for z in [1.05, 1.7, -1.2, -4.0] {
+                let zp = Point::new(z);
+                let t0z = fam.t0(zp);
+                for y in [1.5, -1.5, 3.0] {
+                    if (y - z).abs() < 0.1 {
+                        continue;
+                    }
+                    let exact: f64 = t
+                        .iter()
+                        .zip(&w)
+                        .map(|(&t, &w)| w / (z - t) / (t - y) / PI)
+                        .sum();
+                    let yp = Point::new(y);
+                    let got = pole_transform(fam.t0(yp), yp, zp, t0z);
+                    assert!(
+                        (got - exact).abs() < 1e-12 * exact.abs(),
+                        "({a},{b}) z={z} y={y}: {got} vs {exact}"
+                    );
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,129 @@
+//! The global bases of the two zones of the half problem (docs/theory_spectral.md, (B1)-(B4)),
+//! each with its values and its Cauchy transform at any point, in closed form
+//! ([`crate::numerics::jacobi_transform`]).
+//!
+//! Stick zone [-c, c], tau = x / c:
+//! - p: even orthonormal Legendre polynomials, and the even pole pairs
+//!   1 / (Z - tau) + 1 / (Z + tau), Z = (1 + zeta_j) / c (B1);
+//! - q: odd Legendre polynomials, (1 - tau^2)^g times odd orthonormal P^(g,g), and the odd pole
+//!   pairs 1 / (Z - tau) - 1 / (Z + tau), alone and times (1 - tau^2)^g (B2).
+//!
+//! Slip zone [c, 1], s = (2 x - c - 1) / (1 - c): p = (1 - s)^-g P^(-g,0) and
+//! (1 - s)^-g (1 + s)^g P^(-g,g), with poles 1 / (S_j - s), S_j = s(-(c + eta_j)), in both
+//! weights; q = mu p there (B3).
+
+use crate::numerics::jacobi_transform::{JacobiFamily, Point, pole_transform};
+
+/// One weight's polynomials and poles: columns `k` of the family taken (all, or one parity),
+/// then the poles, each a pair at +Z and -Z with the pair's sign (+1 even, -1 odd) or a single
+/// pole (sign 0).
+#[derive(Clone, Debug)]
+pub(crate) struct Block {
+    family: JacobiFamily,
+    /// The degrees used (all k < n, or the even or odd ones).
+    degrees: Vec<usize>,
+    /// The poles Z (outside [-1, 1]) and T_0 there; for pairs also T_0(-Z).
+    poles: Vec<(Point, f64, f64)>,
+    /// +1: even pairs, -1: odd pairs, 0: single poles.
+    pair: f64,
+}
+
+impl Block {
+    /// A block of `family`'s `degrees` and the poles `z` (pairs with sign `pair`, or single
+    /// poles for pair = 0).
+    pub(crate) fn new(family: JacobiFamily, degrees: Vec<usize>, z: &[Point], pair: f64) -> Self {
+        let poles = z
+            .iter()
+            .map(|&z| {
+                let minus = if pair != 0.0 {
+                    family.t0(z.reflected())
+                } else {
+                    0.0
+                };
+                (z, family.t0(z), minus)
+            })
+            .collect();
+        Block {
+            family,
+            degrees,
+            poles,
+            pair,
+        }
+    }
+
+    /// Number of columns.
+    pub(crate) fn len(&self) -> usize {
+        self.degrees.len() + self.poles.len()
+    }
+
+    /// The columns' values at y in (-1, 1) into out[..len].
+    pub(crate) fn values(&self, y: Point, buf: &mut [f64], out: &mut [f64]) {
+        let n = self.family.len();
+        self.family.values(y, &mut buf[..n]);
+        for (o, &k) in out.iter_mut().zip(&self.degrees) {
+            *o = buf[k];
+        }
+        let w = self.family.weight(y);
+        let m = self.degrees.len();
+        for (o, (z, _, _)) in out[m..].iter_mut().zip(&self.poles) {
+            *o = w * self.pole(z.y, y.y);
+        }
+    }
+
+    /// 1 / (Z - y) with its pair.
+    fn pole(&self, z: f64, y: f64) -> f64 {
+        if self.pair == 0.0 {
+            1.0 / (z - y)
+        } else {
+            1.0 / (z - y) + self.pair / (z + y)
+        }
+    }
+
+    /// The columns' transforms T at y (off the ends) into out[..len].
+    pub(crate) fn transforms(&self, y: Point, buf: &mut [f64], out: &mut [f64]) {
+        let n = self.family.len();
+        self.family.transforms(y, &mut buf[..n]);
+        let t0 = buf[0];
+        for (o, &k) in out.iter_mut().zip(&self.degrees) {
+            *o = buf[k];
+        }
+        let m = self.degrees.len();
+        for (o, &(z, t0z, t0mz)) in out[m..].iter_mut().zip(&self.poles) {
+            // w / (z - t) has the transform (T_0(y) - T_0(z)) / (z - y) (J6); the pair's
+            // second pole 1 / (z + t) = -1 / (-z - t)
+            let mut t = pole_transform(t0, y, z, t0z);
+            if self.pair != 0.0 {
+                t -= self.pair * pole_transform(t0, y, z.reflected(), t0mz);
+            }
+            *o = t;
+        }
+    }
+
+    /// The columns' integrals over [-1, 1].
+    pub(crate) fn integrals(&self, out: &mut [f64]) {
+        for (o, &k) in out.iter_mut().zip(&self.degrees) {
+            *o = if k == 0 { self.family.mass() } else { 0.0 };
+        }
+        let m = self.degrees.len();
+        for (o, &(_, t0z, t0mz)) in out[m..].iter_mut().zip(&self.poles) {
+            // int w / (z - t) = -pi T_0(z)
+            let pi = std::f64::consts::PI;
+            *o = -pi * t0z
+                + if self.pair != 0.0 {
+                    self.pair * pi * t0mz
+                } else {
+                    0.0
+                };
+        }
+    }
+
+    /// Length of the scratch buffer the evaluations need.
+    pub(crate) fn scratch(&self) -> usize {
+        self.family.len()
+    }
+}
+
+/// Degrees k < n of one parity (0 even, 1 odd), `count` of them.
+pub(crate) fn parity(count: usize, odd: usize) -> Vec<usize> {
+    (0..count).map(|i| 2 * i + odd).collect()
+}

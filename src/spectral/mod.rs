@@ -1,0 +1,216 @@
+//! COUPLED on global bases per zone (docs/theory_spectral.md): the spectral solver of the
+//! coupled equations (E1)-(E4) of the reduced problem (bp = bq = b*, friction mu~).
+//!
+//! - [`basis`]: per zone, Jacobi polynomials carrying the local exponents (g at x = +-c,
+//!   -g at x = +-1) and poles clustered towards the neighbouring singular points;
+//! - [`points`]: the collocation points;
+//! - [`system`]: for a trial c, the bordered least-squares system with the constant sigma in
+//!   (E2), whose zero fixes c;
+//! - here: c by the secant method on sigma(lc), lc = ln(c / (1 - c)), from a starting
+//!   guess, at successive levels of the bases' sizes until two levels agree on c and the
+//!   tractions within the tolerances.
+//!
+//! Phase one of the rebuild: the solver answers where it converges from the tabulated stick
+//! edge in the mid-range of c; the caller falls back to the panels elsewhere.
+
+pub(crate) mod basis;
+pub(crate) mod points;
+pub(crate) mod system;
+
+#[cfg(test)]
+mod tests;
+
+use crate::numerics::quadrature::{gauss_jacobi, gauss_legendre};
+use crate::problem::StickEdge;
+pub(crate) use system::Constants;
+use system::{Fixed, Sizes, solve_fixed};
+
+/// Levels of the bases' sizes tried in turn ([`Sizes::at`]).
+const FIRST_LEVEL: usize = 1;
+const MAX_LEVEL: usize = 7;
+
+/// Factor on the distance between two levels' c and tractions in the error estimates.
+const SAFETY: f64 = 2.0;
+
+/// The secant iteration stops when its step in lc falls below this (c to about
+/// 1e-13 c (1 - c)).
+const LC_STEP: f64 = 1e-13;
+
+/// Most chord steps per level.
+const MAX_STEPS: usize = 12;
+
+/// Step in lc of the difference quotient that gives the chord method its slope (sigma moves
+/// by about 3e-5 over it at b* = 0.3, mu~ = 0.5, against a rounding noise below 1e-12).
+const SLOPE_STEP: f64 = 1e-3;
+
+/// The solution of one level: its stick edge and the fixed-c system there.
+#[derive(Clone, Debug)]
+pub(crate) struct Level {
+    pub(crate) lc: f64,
+    pub(crate) fixed: Fixed,
+}
+
+/// The spectral solution with its estimates.
+#[derive(Clone, Debug)]
+pub(crate) struct Spectral {
+    pub(crate) edge: StickEdge,
+    /// Estimated |c - c_exact|.
+    pub(crate) error: f64,
+    /// Estimated traction error of the reduced problem's (p, q~), as the two parts
+    /// (int |dp|, int |dq~|) (the caller weighs dq~ by delta).
+    pub(crate) traction_parts: (f64, f64),
+    pub(crate) fixed: Fixed,
+    pub(crate) level: usize,
+}
+
+impl Spectral {
+    /// (p, q~) at 0 <= x < 1.
+    pub(crate) fn half_line_tractions(&self, x: f64) -> (f64, f64) {
+        self.fixed.at(x)
+    }
+
+    /// Number of unknowns of the returned level.
+    pub(crate) fn unknowns(&self) -> usize {
+        self.fixed.unknowns()
+    }
+}
+
+/// sigma at lc for the level's sizes (fixed by the starting c, so that sigma(lc) is smooth).
+fn sigma_at(k: Constants, lc: f64, sizes: Sizes) -> Option<Level> {
+    let e = StickEdge::from_logit(lc);
+    let fixed = solve_fixed(k, e.c, e.one_minus_c, sizes).ok()?;
+    fixed.sigma.is_finite().then_some(Level { lc, fixed })
+}
+
+/// The root of sigma(lc) at `sizes` by the chord method from `start`: steps -sigma / slope
+/// with one slope per solve (`slope` from a previous level, else the difference quotient over
+/// [`SLOPE_STEP`], far above sigma's rounding noise), until a step falls below [`LC_STEP`]
+/// (the iterate is kept, no further solve), or a step no longer halves |sigma| (the noise
+/// floor: the iterate of smallest |sigma|). Returns the root's level and the slope.
+pub(crate) fn root(
+    k: Constants,
+    start: f64,
+    sizes: Sizes,
+    slope: Option<f64>,
+) -> Option<(Level, f64)> {
+    let mut cur = sigma_at(k, start, sizes)?;
+    let slope = match slope {
+        Some(d) => d,
+        None => {
+            let other = sigma_at(k, start + SLOPE_STEP, sizes)?;
+            let d = (other.fixed.sigma - cur.fixed.sigma) / SLOPE_STEP;
+            if other.fixed.sigma.abs() < cur.fixed.sigma.abs() {
+                cur = other;
+            }
+            d
+        }
+    };
+    if slope == 0.0 || !slope.is_finite() {
+        return None;
+    }
+    for _ in 0..MAX_STEPS {
+        let step = -cur.fixed.sigma / slope;
+        if step.abs() <= LC_STEP * (1.0 + cur.lc.abs()) {
+            return Some((cur, slope));
+        }
+        let next = sigma_at(k, cur.lc + step, sizes)?;
+        if next.fixed.sigma.abs() >= 0.5 * cur.fixed.sigma.abs() {
+            // sigma's noise floor, which is the level's own discretisation error (at b* = 0.3,
+            // mu~ = 0.5: 5e-8 at level 1, 1e-12 at level 4): the comparison of levels
+            // measures what is left
+            return Some((cur, slope));
+        }
+        cur = next;
+    }
+    None
+}
+
+/// Solves the reduced problem from the starting lc until two successive levels agree on c
+/// within `tol` and on the tractions within `traction_tol` (estimates: [`SAFETY`] times the
+/// differences), the traction error weighing dq~ by `delta`; None where no level up to
+/// [`MAX_LEVEL`] gets there or the answer is not admissible.
+pub(crate) fn solve(
+    k: Constants,
+    start: f64,
+    tol: f64,
+    traction_tol: f64,
+    delta: f64,
+) -> Option<Spectral> {
+    let mut prev: Option<(Level, f64)> = None;
+    let mut lc = start;
+    let mut slope = None;
+    for level in FIRST_LEVEL..=MAX_LEVEL {
+        let e = StickEdge::from_logit(lc);
+        let sizes = Sizes::at(level, e.c, e.one_minus_c);
+        let (cur, d) = root(k, lc, sizes, slope)?;
+        slope = Some(d);
+        // the level's own uncertainty in lc: the chord step its sigma still asks for
+        let left = (cur.fixed.sigma / d).abs();
+        if let Some((p, p_left)) = &prev {
+            let (ec, ep) = (StickEdge::from_logit(cur.lc), StickEdge::from_logit(p.lc));
+            let error = SAFETY * (ec.distance(ep) + ec.c * ec.one_minus_c * (left + p_left));
+            let (dp, dq) = distance(&cur.fixed, &p.fixed);
+            let parts = (SAFETY * dp, SAFETY * dq);
+            if error <= tol && parts.0 + delta * parts.1 <= traction_tol {
+                if !admissible(&cur.fixed, k.mu) {
+                    return None;
+                }
+                return Some(Spectral {
+                    edge: ec,
+                    error,
+                    traction_parts: parts,
+                    fixed: cur.fixed,
+                    level,
+                });
+            }
+        }
+        lc = cur.lc;
+        prev = Some((cur, left));
+    }
+    None
+}
+
+/// Gauss points per zone of [`distance`].
+const DISTANCE_POINTS: usize = 48;
+
+/// (int |dp|, int |dq|) over (-1, 1) between two levels' tractions (the norm of
+/// [`crate::problem::traction_distance`]), each zone by a Gauss rule in its own variable: on
+/// the stick zone Gauss-Legendre in tau = x / c, on the slip zone Gauss-Jacobi in s for the
+/// edge weight (1 - s)^-g (the integrand divided by it). Both levels are evaluated at the
+/// same x: their stick edges differ by the levels' error in c.
+fn distance(a: &Fixed, b: &Fixed) -> (f64, f64) {
+    let (c, w, g) = (a.basis.c, a.basis.w, a.basis.k.g);
+    let (mut dp, mut dq) = (0.0, 0.0);
+    let (t, wt) = gauss_legendre(DISTANCE_POINTS);
+    for (&t, &wt) in t.iter().zip(&wt) {
+        // tau in (0, 1): the half of the stick zone
+        let x = 0.5 * c * (1.0 + t);
+        let ((pa, qa), (pb, qb)) = (a.at(x), b.at(x));
+        dp += 0.5 * c * wt * (pa - pb).abs();
+        dq += 0.5 * c * wt * (qa - qb).abs();
+    }
+    let (s, ws) = gauss_jacobi(DISTANCE_POINTS, -g, 0.0);
+    for (&s, &ws) in s.iter().zip(&ws) {
+        let x = c + 0.5 * w * (1.0 + s);
+        let weight = (1.0 - s).powf(-g);
+        let ((pa, qa), (pb, qb)) = (a.at(x), b.at(x));
+        dp += 0.5 * w * ws * (pa - pb).abs() / weight;
+        dq += 0.5 * w * ws * (qa - qb).abs() / weight;
+    }
+    (2.0 * dp, 2.0 * dq)
+}
+
+/// Points per zone of the admissibility check.
+const CHECK_POINTS: usize = 64;
+
+/// p > 0 everywhere and |q| <= mu p on the stick zone (to 1e-6 relative), at Chebyshev
+/// points of each zone.
+fn admissible(f: &Fixed, mu: f64) -> bool {
+    let (c, w) = (f.basis.c, f.basis.w);
+    (0..CHECK_POINTS).all(|i| {
+        let th = (i as f64 + 0.5) * std::f64::consts::PI / CHECK_POINTS as f64;
+        let stick = f.at(c * (0.5 * th).sin());
+        let slip = f.at(c + w * (0.5 * th).sin().powi(2));
+        stick.0 > 0.0 && stick.1.abs() <= mu * stick.0 * (1.0 + 1e-6) && slip.0 > 0.0
+    })
+}

@@ -1,0 +1,90 @@
+//! Collocation points of the half problem (docs/theory_spectral.md, (C1)): Chebyshev points of
+//! each zone, plus points spaced geometrically towards x = c from both sides over the decades
+//! the poles span (down to a hundredth of the smaller of c and 1 - c relative to the zone),
+//! and towards x = 1.
+
+/// A point 0 <= x < 1 with its offsets 1 - x and x - c, each to full relative accuracy.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Pt {
+    pub(crate) x: f64,
+    pub(crate) omx: f64,
+    pub(crate) xmc: f64,
+}
+
+/// Geometric points per decade towards the ends.
+const PER_DECADE: f64 = 3.0;
+
+/// The geometric clusters start at this fraction of the zone.
+const CLUSTER_FROM: f64 = 0.1;
+
+/// The clusters reach down to this fraction of the smaller scale at the stick edge (the
+/// nearest pole sits at a tenth of it, docs/theory_spectral.md (B4)).
+const CLUSTER_DEPTH: f64 = 1e-2;
+
+/// The cluster towards x = 1 reaches (1 - c) times this (the edge exponent is in the basis).
+const EDGE_DEPTH: f64 = 1e-6;
+
+/// log-spaced fractions from CLUSTER_FROM down to `depth`.
+fn decades(from: f64, depth: f64) -> Vec<f64> {
+    let n = ((from / depth).log10() * PER_DECADE).ceil().max(1.0) as usize;
+    (0..=n)
+        .map(|i| from * (depth / from).powf(i as f64 / n as f64))
+        .collect()
+}
+
+/// Stick points (x < c) and slip points (x > c) for the stick edge c (1 - c = w), with about
+/// `stick` and `slip` Chebyshev points.
+pub(crate) fn collocation(c: f64, w: f64, stick: usize, slip: usize) -> (Vec<Pt>, Vec<Pt>) {
+    // the stick functions' poles sit at 1 + zeta, zeta >= (1 - c) / 10; the slip functions' at
+    // -(c + eta), eta >= c / 10: the clusters reach a hundredth of those scales
+    let floor = CLUSTER_FROM * 1e-2;
+    let (stick_depth, slip_depth) = (
+        (CLUSTER_DEPTH * w / c).min(floor),
+        (CLUSTER_DEPTH * c / w).min(floor),
+    );
+    let mut st = Vec::new();
+    // tau = cos(theta), theta in (0, pi/2): c - x = c (1 - cos theta) = 2 c sin^2(theta / 2)
+    for i in 0..stick {
+        let th = (i as f64 + 0.5) * std::f64::consts::FRAC_PI_2 / stick as f64;
+        let d = 2.0 * c * (0.5 * th).sin().powi(2);
+        st.push(Pt {
+            x: c - d,
+            omx: w + d,
+            xmc: -d,
+        });
+    }
+    for f in decades(CLUSTER_FROM, stick_depth) {
+        let d = c * f;
+        st.push(Pt {
+            x: c - d,
+            omx: w + d,
+            xmc: -d,
+        });
+    }
+    let mut sl = Vec::new();
+    // s = -cos(theta): x - c = w sin^2(theta / 2), 1 - x = w cos^2(theta / 2)
+    for i in 0..slip {
+        let th = (i as f64 + 0.5) * std::f64::consts::PI / slip as f64;
+        let (a, b) = ((0.5 * th).sin().powi(2), (0.5 * th).cos().powi(2));
+        sl.push(Pt {
+            x: c + w * a,
+            omx: w * b,
+            xmc: w * a,
+        });
+    }
+    for f in decades(CLUSTER_FROM, slip_depth) {
+        sl.push(Pt {
+            x: c + w * f,
+            omx: w * (1.0 - f),
+            xmc: w * f,
+        });
+    }
+    for f in decades(CLUSTER_FROM, EDGE_DEPTH) {
+        sl.push(Pt {
+            x: 1.0 - w * f,
+            omx: w * f,
+            xmc: w * (1.0 - f),
+        });
+    }
+    (st, sl)
+}

@@ -1,0 +1,427 @@
+//! The fixed-c system of the half problem (docs/theory_spectral.md, (S1)-(S4)): for a trial
+//! stick edge c, the coefficients of the zone bases ([`super::basis`]) and the border
+//! constant sigma that solve, in the least-squares sense at the collocation points
+//! ([`super::points`]),
+//!
+//! - (E1) H[p](x) - b q(x) = 0 at every point, 0 <= x < 1;
+//! - (E2) H[q](x) + b p(x) = sigma at the stick points;
+//! - int p = 1, by elimination of the column whose integral weighs most;
+//!
+//! with q = mu p on the slip zone built into the slip columns. The exact c is where
+//! sigma(c) = 0 (the bounded shear traction at x = c). Rows are weighted by (1 - x)^g (the
+//! pressure's edge growth) and columns scaled to unit norm before the least-squares solve.
+
+use crate::error::{Error, Result};
+use crate::numerics::jacobi_transform::{JacobiFamily, Point};
+use crate::numerics::lstsq::LeastSquares;
+
+use super::basis::{Block, parity};
+use super::points::{Pt, collocation};
+
+/// The reduced problem's constants: bp = bq = b (b*), friction mu (mu~), edge exponent g.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Constants {
+    pub(crate) b: f64,
+    pub(crate) mu: f64,
+    pub(crate) g: f64,
+}
+
+/// Sizes of the bases at one level of refinement.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) struct Sizes {
+    /// Even Legendre polynomials in the stick p, odd ones in the stick q.
+    pub(crate) legendre: usize,
+    /// Odd P^(g,g) in the stick q.
+    pub(crate) stick_g: usize,
+    /// P^(-g,0) and P^(-g,g) on the slip zone.
+    pub(crate) slip: [usize; 2],
+    /// Pole pairs per stick block and poles per slip block.
+    pub(crate) poles: [usize; 2],
+}
+
+impl Sizes {
+    /// The sizes at `level` (1, 2, ...) for the stick edge c (1 - c = w): polynomial degrees
+    /// growing linearly in the level, pole counts in the decades between the zones' ends
+    /// and their nearest singularities (B4).
+    pub(crate) fn at(level: usize, c: f64, w: f64) -> Self {
+        let l = level as f64;
+        let per_decade = 1.0 + 0.5 * l;
+        let stick_decades = (20.0 / w).log10();
+        let slip_decades = (10.0 / c).log10();
+        Sizes {
+            legendre: 3 + 2 * level,
+            stick_g: 2 + 2 * level,
+            slip: [5 + 3 * level, 3 + 2 * level],
+            poles: [
+                (stick_decades * per_decade).ceil() as usize,
+                (slip_decades * per_decade).ceil() as usize,
+            ],
+        }
+    }
+}
+
+/// `n` points log-spaced over [lo, hi].
+fn log_spaced(lo: f64, hi: f64, n: usize) -> Vec<f64> {
+    if n == 1 {
+        return vec![(lo * hi).sqrt()];
+    }
+    (0..n)
+        .map(|i| lo * (hi / lo).powf(i as f64 / (n - 1) as f64))
+        .collect()
+}
+
+/// The bases of both zones for one c.
+#[derive(Clone, Debug)]
+pub(crate) struct Basis {
+    pub(crate) c: f64,
+    pub(crate) w: f64,
+    pub(crate) k: Constants,
+    /// Stick zone: p (even), q (odd Legendre), q ((1 - tau^2)^g P^(g,g), odd).
+    stick: [Block; 3],
+    /// Slip zone: (1 - s)^-g P^(-g,0), (1 - s)^-g (1 + s)^g P^(-g,g).
+    slip: [Block; 2],
+    scratch: usize,
+}
+
+/// Column ranges: stick p, stick q (both blocks), slip, sigma.
+impl Basis {
+    pub(crate) fn new(k: Constants, c: f64, w: f64, sizes: Sizes) -> Self {
+        let g = k.g;
+        // stick poles at x = +-(1 + zeta), zeta in [w / 10, 2]: tau = (1 + zeta) / c
+        let stick_z: Vec<Point> = log_spaced(0.1 * w, 2.0, sizes.poles[0])
+            .into_iter()
+            .map(|z| Point::offsets(-(w + z) / c, (1.0 + z + c) / c))
+            .collect();
+        // slip poles at x = -(c + eta), eta in [c / 10, 1]: s = (2 x - c - 1) / w
+        let slip_z: Vec<Point> = log_spaced(0.1 * c, 1.0, sizes.poles[1])
+            .into_iter()
+            .map(|e| Point::offsets(2.0 * (1.0 + c + e) / w, -2.0 * (2.0 * c + e) / w))
+            .collect();
+        let n = sizes.legendre;
+        let ng = sizes.stick_g;
+        let stick = [
+            Block::new(
+                JacobiFamily::new(0.0, 0.0, 2 * n),
+                parity(n, 0),
+                &stick_z,
+                1.0,
+            ),
+            Block::new(
+                JacobiFamily::new(0.0, 0.0, 2 * n),
+                parity(n, 1),
+                &stick_z,
+                -1.0,
+            ),
+            Block::new(
+                JacobiFamily::new(g, g, 2 * ng),
+                parity(ng, 1),
+                &stick_z,
+                -1.0,
+            ),
+        ];
+        let [s0, sg] = sizes.slip;
+        let slip = [
+            Block::new(
+                JacobiFamily::new(-g, 0.0, s0),
+                (0..s0).collect(),
+                &slip_z,
+                0.0,
+            ),
+            Block::new(
+                JacobiFamily::new(-g, g, sg),
+                (0..sg).collect(),
+                &slip_z,
+                0.0,
+            ),
+        ];
+        let scratch = stick
+            .iter()
+            .chain(&slip)
+            .map(Block::scratch)
+            .max()
+            .unwrap_or(1);
+        Basis {
+            c,
+            w,
+            k,
+            stick,
+            slip,
+            scratch,
+        }
+    }
+
+    /// Number of coefficients (without sigma).
+    pub(crate) fn len(&self) -> usize {
+        self.stick.iter().chain(&self.slip).map(Block::len).sum()
+    }
+
+    /// Start of the stick q columns, of the slip columns.
+    fn starts(&self) -> (usize, usize) {
+        let q = self.stick[0].len();
+        (q, q + self.stick[1].len() + self.stick[2].len())
+    }
+
+    /// tau = x / c with its offsets.
+    fn tau(&self, p: &Pt) -> Point {
+        Point::offsets(-p.xmc / self.c, (self.c + p.x) / self.c)
+    }
+
+    /// s(x) and s(-x) with their offsets.
+    fn s_pair(&self, p: &Pt) -> (Point, Point) {
+        let w = self.w;
+        (
+            Point::offsets(2.0 * p.omx / w, 2.0 * p.xmc / w),
+            Point::offsets(2.0 * (1.0 + p.x) / w, -2.0 * (p.x + self.c) / w),
+        )
+    }
+
+    /// The columns' values (p and q parts) at a point of the zone it lies in.
+    pub(crate) fn tractions_row(&self, p: &Pt, pv: &mut [f64], qv: &mut [f64]) {
+        pv.fill(0.0);
+        qv.fill(0.0);
+        let mut buf = vec![0.0; self.scratch];
+        let (q0, s0) = self.starts();
+        if p.xmc < 0.0 {
+            let t = self.tau(p);
+            let n0 = self.stick[0].len();
+            self.stick[0].values(t, &mut buf, &mut pv[..n0]);
+            let n1 = self.stick[1].len();
+            self.stick[1].values(t, &mut buf, &mut qv[q0..q0 + n1]);
+            let n2 = self.stick[2].len();
+            self.stick[2].values(t, &mut buf, &mut qv[q0 + n1..q0 + n1 + n2]);
+        } else {
+            let (s, _) = self.s_pair(p);
+            let mut at = s0;
+            for b in &self.slip {
+                let n = b.len();
+                b.values(s, &mut buf, &mut pv[at..at + n]);
+                at += n;
+            }
+            for j in s0..at {
+                qv[j] = self.k.mu * pv[j];
+            }
+        }
+    }
+
+    /// The columns' H[p] and H[q] at a point.
+    fn hilbert_row(&self, p: &Pt, hp: &mut [f64], hq: &mut [f64]) {
+        hp.fill(0.0);
+        hq.fill(0.0);
+        let mut buf = vec![0.0; self.scratch];
+        let mut other = vec![0.0; hp.len()];
+        let (q0, s0) = self.starts();
+        let t = self.tau(p);
+        let n0 = self.stick[0].len();
+        self.stick[0].transforms(t, &mut buf, &mut hp[..n0]);
+        let n1 = self.stick[1].len();
+        self.stick[1].transforms(t, &mut buf, &mut hq[q0..q0 + n1]);
+        let n2 = self.stick[2].len();
+        self.stick[2].transforms(t, &mut buf, &mut hq[q0 + n1..q0 + n1 + n2]);
+        // H = -T on the zone's own map
+        for v in hp[..s0].iter_mut().chain(hq[..s0].iter_mut()) {
+            *v = -*v;
+        }
+        let (s, sm) = self.s_pair(p);
+        let mut at = s0;
+        for b in &self.slip {
+            let n = b.len();
+            b.transforms(s, &mut buf, &mut hp[at..at + n]);
+            b.transforms(sm, &mut buf, &mut other[at..at + n]);
+            at += n;
+        }
+        let mu = self.k.mu;
+        for j in s0..at {
+            // the mirror zone: p even adds +T(s(-x)), q odd -T(s(-x))
+            let (own, mirror) = (hp[j], other[j]);
+            hp[j] = -own + mirror;
+            hq[j] = mu * (-own - mirror);
+        }
+    }
+
+    /// int_{-1}^{1} p of each column.
+    fn integrals(&self) -> Vec<f64> {
+        let mut out = vec![0.0; self.len()];
+        let n0 = self.stick[0].len();
+        self.stick[0].integrals(&mut out[..n0]);
+        for v in &mut out[..n0] {
+            *v *= self.c;
+        }
+        let (_, s0) = self.starts();
+        let mut at = s0;
+        for b in &self.slip {
+            let n = b.len();
+            b.integrals(&mut out[at..at + n]);
+            at += n;
+        }
+        for v in &mut out[s0..] {
+            *v *= self.w;
+        }
+        out
+    }
+}
+
+/// Chebyshev points per unknown in each zone (rows: two per stick point, one per slip point;
+/// about 2.6 rows per unknown in all with the clusters, docs/theory_spectral.md (C1)).
+const STICK_POINTS: f64 = 0.6;
+const SLIP_POINTS: f64 = 1.0;
+
+/// The solution of the fixed-c system.
+#[derive(Clone, Debug)]
+pub(crate) struct Fixed {
+    pub(crate) basis: Basis,
+    /// The coefficients of the basis columns.
+    pub(crate) coef: Vec<f64>,
+    /// The border constant of (E2) (zero at the exact c).
+    pub(crate) sigma: f64,
+}
+
+/// Solves the fixed-c system at `sizes` (module documentation).
+pub(crate) fn solve_fixed(k: Constants, c: f64, w: f64, sizes: Sizes) -> Result<Fixed> {
+    let basis = Basis::new(k, c, w, sizes);
+    let n = basis.len();
+    let cols = n + 1;
+    let (stick, slip) = collocation(
+        c,
+        w,
+        (STICK_POINTS * cols as f64).ceil() as usize,
+        (SLIP_POINTS * cols as f64).ceil() as usize,
+    );
+    let rows = 2 * stick.len() + slip.len();
+    let mut a = vec![0.0; rows * cols];
+    let (mut pv, mut qv, mut hp, mut hq) = (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+    let mut r = 0;
+    for (pt, on_stick) in stick
+        .iter()
+        .map(|p| (p, true))
+        .chain(slip.iter().map(|p| (p, false)))
+    {
+        basis.tractions_row(pt, &mut pv, &mut qv);
+        basis.hilbert_row(pt, &mut hp, &mut hq);
+        let weight = pt.omx.powf(k.g);
+        let row = &mut a[r * cols..(r + 1) * cols];
+        for j in 0..n {
+            row[j] = weight * (hp[j] - k.b * qv[j]);
+        }
+        r += 1;
+        if on_stick {
+            let row = &mut a[r * cols..(r + 1) * cols];
+            for j in 0..n {
+                row[j] = weight * (hq[j] + k.b * pv[j]);
+            }
+            row[n] = -weight;
+            r += 1;
+        }
+    }
+    // column scales
+    let mut scale = vec![0.0; cols];
+    for i in 0..rows {
+        for j in 0..cols {
+            scale[j] += a[i * cols + j] * a[i * cols + j];
+        }
+    }
+    for s in &mut scale {
+        *s = if *s > 0.0 { 1.0 / s.sqrt() } else { 1.0 };
+    }
+    for i in 0..rows {
+        for j in 0..cols {
+            a[i * cols + j] *= scale[j];
+        }
+    }
+    // int p = 1: eliminate the column whose scaled integral is largest
+    let integral: Vec<f64> = basis
+        .integrals()
+        .iter()
+        .zip(&scale)
+        .map(|(i, s)| i * s)
+        .collect();
+    let j0 = (0..n)
+        .max_by(|&i, &j| integral[i].abs().total_cmp(&integral[j].abs()))
+        .unwrap_or(0);
+    let i0 = integral[j0];
+    let keep: Vec<usize> = (0..cols).filter(|&j| j != j0).collect();
+    let m = keep.len();
+    let mut reduced = vec![0.0; rows * m];
+    let mut rhs = vec![0.0; rows];
+    for i in 0..rows {
+        let a0 = a[i * cols + j0];
+        rhs[i] = -a0 / i0;
+        for (jj, &j) in keep.iter().enumerate() {
+            let ij = if j < n { integral[j] } else { 0.0 };
+            reduced[i * m + jj] = a[i * cols + j] - a0 * ij / i0;
+        }
+    }
+    // the frame is ill-conditioned (near-dependent columns by design: cond 1e15 and more);
+    // Householder QR without pivoting spreads their rounding over every coefficient (the
+    // mid-range scenes of the tests lost c at 1e-8 that way), so the pivoted QR at once
+    let x = LeastSquares::pivoted().solve(&reduced, m, &rhs);
+    if x.iter().any(|v| !v.is_finite()) {
+        return Err(Error::NoConvergence(format!(
+            "spectral: least-squares solution not finite at c = {c}"
+        )));
+    }
+    let mut full = vec![0.0; cols];
+    let mut sum = 0.0;
+    for (jj, &j) in keep.iter().enumerate() {
+        full[j] = x[jj];
+        if j < n {
+            sum += integral[j] * x[jj];
+        }
+    }
+    full[j0] = (1.0 - sum) / i0;
+    let coef: Vec<f64> = (0..n).map(|j| full[j] * scale[j]).collect();
+    let sigma = full[n] * scale[n];
+    Ok(Fixed { basis, coef, sigma })
+}
+
+impl Fixed {
+    /// (p, q) of the reduced problem at a point.
+    pub(crate) fn eval(&self, p: &Pt) -> (f64, f64) {
+        let n = self.coef.len();
+        let (mut pv, mut qv) = (vec![0.0; n], vec![0.0; n]);
+        self.basis.tractions_row(p, &mut pv, &mut qv);
+        let dot = |v: &[f64]| v.iter().zip(&self.coef).map(|(a, b)| a * b).sum::<f64>();
+        (dot(&pv), dot(&qv))
+    }
+
+    /// (p, q) at 0 <= x < 1 (the stick side at x = c).
+    pub(crate) fn at(&self, x: f64) -> (f64, f64) {
+        let xmc = x - self.basis.c;
+        let xmc = if xmc == 0.0 { -f64::MIN_POSITIVE } else { xmc };
+        self.eval(&Pt {
+            x,
+            omx: 1.0 - x,
+            xmc,
+        })
+    }
+
+    /// The residuals of (E1) and (E2) (0 on the slip zone) at 0 <= x < 1, x != c, with
+    /// sigma = 0.
+    #[cfg(test)]
+    pub(crate) fn residuals(&self, x: f64) -> (f64, f64) {
+        let n = self.coef.len();
+        let pt = Pt {
+            x,
+            omx: 1.0 - x,
+            xmc: x - self.basis.c,
+        };
+        let (mut hp, mut hq) = (vec![0.0; n], vec![0.0; n]);
+        self.basis.hilbert_row(&pt, &mut hp, &mut hq);
+        let dot = |v: &[f64]| v.iter().zip(&self.coef).map(|(a, b)| a * b).sum::<f64>();
+        let (p, q) = self.eval(&pt);
+        let b = self.basis.k.b;
+        let e2 = if pt.xmc < 0.0 { dot(&hq) + b * p } else { 0.0 };
+        (dot(&hp) - b * q, e2)
+    }
+
+    /// int_{-1}^{1} p.
+    #[cfg(test)]
+    pub(crate) fn integral_of_p(&self) -> f64 {
+        let i = self.basis.integrals();
+        i.iter().zip(&self.coef).map(|(a, b)| a * b).sum()
+    }
+
+    /// Number of unknowns (coefficients and sigma).
+    pub(crate) fn unknowns(&self) -> usize {
+        self.coef.len() + 1
+    }
+}

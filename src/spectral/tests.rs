@@ -1,0 +1,83 @@
+//! The spectral solver against the panels (an independent discretisation) and the
+//! tabulated stick edge.
+
+use super::*;
+
+fn consts(b: f64, mu: f64) -> Constants {
+    Constants {
+        b,
+        mu,
+        g: 0.5 - (b * mu).atan() / std::f64::consts::PI,
+    }
+}
+
+/// Mid-range scenes (c = 0.04 .. 0.92): c within the tabulated stick edge's bound plus the
+/// estimate (the table was built by the panels, an independent discretisation), and both
+/// estimates hold against a solve to tolerances 100 times tighter.
+#[test]
+fn mid_range_meets_its_estimates() {
+    for (b, mu) in [(0.3, 0.5), (0.6, 1.0), (0.3, 0.11), (0.45, 0.3), (0.8, 2.0)] {
+        let k = consts(b, mu);
+        let (lc, bound) = crate::stick_edge_table::lookup(b, mu).expect("tabulated");
+        let table = StickEdge::from_logit(lc);
+        let s = solve(k, lc, 1e-8, 1e-6, 1.0).unwrap_or_else(|| panic!("({b}, {mu}): no answer"));
+        let fine =
+            solve(k, lc, 1e-10, 1e-8, 1.0).unwrap_or_else(|| panic!("({b}, {mu}): none at 1e-10"));
+        eprintln!(
+            "b* = {b}, mu~ = {mu}: c = {} (table {} +- {bound:.1e}); estimates {:.1e} / {:.1e} at level {} ({} unknowns), {:.1e} / {:.1e} at level {}",
+            fine.edge.c,
+            table.c,
+            s.error,
+            s.traction_parts.0 + s.traction_parts.1,
+            s.level,
+            s.unknowns(),
+            fine.error,
+            fine.traction_parts.0 + fine.traction_parts.1,
+            fine.level
+        );
+        assert!(
+            fine.edge.distance(table) <= bound + fine.error,
+            "({b}, {mu}): c off the table"
+        );
+        let true_c = s.edge.distance(fine.edge);
+        assert!(
+            true_c <= s.error + fine.error,
+            "({b}, {mu}): c off by {true_c:e}, estimate {:e}",
+            s.error
+        );
+        let (dp, dq) = distance(&s.fixed, &fine.fixed);
+        let est = s.traction_parts.0 + s.traction_parts.1;
+        let fine_est = fine.traction_parts.0 + fine.traction_parts.1;
+        assert!(
+            dp + dq <= est + fine_est,
+            "({b}, {mu}): tractions off by {:e}, estimate {est:e}",
+            dp + dq
+        );
+    }
+}
+
+/// The equations themselves at points that are not collocation points, by the zone
+/// transforms (E1) and (E2) with sigma = 0, and int p = 1 by Gauss-Jacobi rules.
+#[test]
+fn residuals_off_the_collocation_points() {
+    let (b, mu) = (0.45, 0.3);
+    let k = consts(b, mu);
+    let (lc, _) = crate::stick_edge_table::lookup(b, mu).expect("tabulated");
+    let s = solve(k, lc, 1e-10, 1e-8, 1.0).expect("answer");
+    let f = &s.fixed;
+    let (c, w) = (f.basis.c, f.basis.w);
+    let mut worst: f64 = 0.0;
+    for i in 1..40 {
+        // between the Chebyshev points of both zones
+        let t = i as f64 / 40.0;
+        for x in [c * t * t.sqrt(), c + w * t * t] {
+            let r = f.residuals(x);
+            let scale = f.at(x).0;
+            worst = worst.max(r.0.abs() / scale).max(r.1.abs() / scale);
+        }
+    }
+    eprintln!("largest residual relative to p: {worst:.1e}");
+    assert!(worst < 1e-7, "residual {worst:e}");
+    let total = f.integral_of_p();
+    assert!((total - 1.0).abs() < 1e-13, "int p = {total}");
+}
