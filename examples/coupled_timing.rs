@@ -1,5 +1,5 @@
 //! Times METHOD_COUPLED on one core: solve (tol = 1e-10 and 1e-6) and traction evaluation,
-//! isotropic plane-strain steel and the carbon/epoxy ply of THEORY.md section 2, in CPU time
+//! isotropic plane-strain steel and the carbon/epoxy ply of the default scene, in CPU time
 //! of the thread (the machine may be shared): the median over the repetitions.
 //! Optional argument: the number of repetitions per case (default 20). "cold": each
 //! repetition with its own edge exponent g (mu shifted by 1e-9).

@@ -32,7 +32,7 @@ struct Scene {
     contact: Contact,
 }
 
-/// Scenes at the corners of the reduced plane (THEORY.md section 4: the material
+/// Scenes at the corners of the reduced plane (docs/theory.md (R2): the material
 /// `effective(1, 1 - 2 b*, 1, 1)` with mu = mu~): (b*, mu~, what is extreme there).
 const CORNERS: [(f64, f64, &str); 8] = [
     (0.3, 0.01, "stick zone c ~ 1e-21 (full slip)"),

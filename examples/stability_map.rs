@@ -1,4 +1,4 @@
-//! Stability map: where each method fails. c depends only on (b*, mu~) (THEORY.md section 4),
+//! Stability map: where each method fails. c depends only on (b*, mu~) (docs/theory.md (R2)),
 //! so the methods are swept over that plane (b* in [0.005, 0.99], mu~ in [1e-6, 1e6], and
 //! mu = 0) and over
 //! the engineering-constant extremes that lead to its edges (section 5: mu -> 0 and -> infinity,

@@ -1,4 +1,4 @@
-//! Goodman's approximation (THEORY.md section 5): the shear traction's effect on the
+//! Goodman's approximation (docs/theory.md §7, (G1)-(G3)): the shear traction's effect on the
 //! pressure is dropped (bp = 0 in eq. (10)), so p = p0 = 1 / (pi sqrt(1 - x^2)); the stick
 //! half-width c solves K(sqrt(1 - c^2)) / K(c) = bq / mu, and q follows from eq. (11) on the
 //! stick zone and from eq. (9) on the slip zones.

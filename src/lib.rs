@@ -1,8 +1,8 @@
 //! # orthoslip
 //!
 //! Contact tractions of a rigid flat-ended punch pressed into an orthotropic elastic
-//! half-plane with Coulomb friction (partial slip), after Shen et al. (the paper in
-//! `shared/paper`) and the project's THEORY notes. The Rust core lives in the modules below;
+//! half-plane with Coulomb friction (partial slip), after Shen et al., Int. J. Mech. Sci. 135 (2018)
+//! 168-175; model, conventions and methods in docs/theory.md. The Rust core lives in the modules below;
 //! the C ABI in `src/ffi/` wraps it and is the only place that deals with raw pointers.
 //!
 //! ```

@@ -1,6 +1,6 @@
 //! The orthotropic half-plane: effective constants (E, nu, delta, kappa) of paper eq. (1),
 //! built from engineering constants by eqs. (2) (plane stress) and (3) (plane strain) with the
-//! corrections of THEORY.md section 2, and the surface Green's function constants A, B, C of
+//! corrections of docs/theory.md (M3), (M4), and the surface Green's function constants A, B, C of
 //! eqs. (4)-(5).
 
 use std::f64::consts::PI;
@@ -144,7 +144,7 @@ impl Material {
     }
 
     /// Directly from the effective constants of paper eq. (1). Admissible iff E > 0,
-    /// delta > 0, -1 < nu < 1 and kappa > -nu (THEORY.md section 2).
+    /// delta > 0, -1 < nu < 1 and kappa > -nu (docs/theory.md (M5)).
     pub fn effective(e: f64, nu: f64, delta: f64, kappa: f64) -> Result<Self> {
         positive(&[("E", e), ("delta", delta)])?;
         finite(&[("nu", nu), ("kappa", kappa)])?;
@@ -208,7 +208,7 @@ impl Material {
         (2.0 * (1.0 + self.k.kappa)).sqrt()
     }
 
-    /// Green's function constants A, B, C (THEORY.md section 2).
+    /// Green's function constants A, B, C (docs/theory.md (M7)).
     pub fn green(&self) -> Green {
         let Effective { e, nu, delta, .. } = self.k;
         let r = self.root_sum();
@@ -220,7 +220,7 @@ impl Material {
     }
 
     /// b* = (1 - nu) / sqrt(2 (1 + kappa)) in (0, 1): the one material number the tractions
-    /// depend on besides delta (THEORY.md section 4).
+    /// depend on besides delta (docs/theory.md (R1)).
     pub fn b_star(&self) -> f64 {
         (1.0 - self.k.nu) / self.root_sum()
     }

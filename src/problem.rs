@@ -1,4 +1,4 @@
-//! The boundary-value problem (THEORY.md section 3), with the material entering only
+//! The boundary-value problem (docs/theory.md §3), with the material entering only
 //! through bp = A / (pi C) and bq = A / (pi B):
 //! with H\[f\](x) = (1/pi) PV int_{-1}^{1} f(t) / (x - t) dt,
 //! - (E1) H\[p\] = bp q on |x| < 1 (paper eq. (10)),
@@ -7,7 +7,7 @@
 //! - (E4) int p = 1, q odd.
 //!
 //! Substituting q = delta q~ with delta = sqrt(bq / bp) gives the same problem with
-//! bp = bq = b* = sqrt(bp bq) and friction mu~ = mu / delta (THEORY.md section 4).
+//! bp = bq = b* = sqrt(bp bq) and friction mu~ = mu / delta (docs/theory.md (R2)).
 
 use crate::error::{Error, Result};
 use crate::numerics::quadrature::graded_rule;
@@ -25,7 +25,7 @@ pub struct Coupling {
 
 impl Coupling {
     /// Checks the ranges every method relies on: bp >= 0, bq > 0, mu >= 0, all finite, and
-    /// b* = sqrt(bp bq) < 1 (as for every admissible material, THEORY.md section 4).
+    /// b* = sqrt(bp bq) < 1 (as for every admissible material, docs/theory.md (R1)).
     pub fn validate(&self) -> Result<()> {
         let finite = self.bp.is_finite() && self.bq.is_finite() && self.mu.is_finite();
         if !(finite && self.bp >= 0.0 && self.bq > 0.0 && self.mu >= 0.0) {
@@ -49,7 +49,7 @@ impl Coupling {
     }
 
     /// Exponent g of the punch-edge singularity p ~ (1 - |x|)^(-g):
-    /// g = 1/2 - arctan(bp mu) / pi (THEORY.md section 5), computed as
+    /// g = 1/2 - arctan(bp mu) / pi (docs/theory.md (X1)), computed as
     /// arctan(1 / (bp mu)) / pi, which keeps its relative accuracy at large friction (the
     /// difference lost eps / g relative: 1e-6 at bp mu = 1e10).
     pub fn edge_exponent(&self) -> f64 {

@@ -1,10 +1,10 @@
 //! Every OK answer of COUPLED (and of AUTO, which falls back on it) is admissible (issue 8,
 //! point 7), checked from the returned tractions and slip, over the reduced plane
-//! (THEORY.md section 4: the material `effective(1, 1 - 2 b*, 1, 1)` with mu = mu~) including
+//! (docs/theory.md (R2): the material `effective(1, 1 - 2 b*, 1, 1)` with mu = mu~) including
 //! its corners, where the closed-form regimes answer:
 //! - p > 0 on the whole contact;
 //! - |q| <= mu p on the stick zone, q = mu p sgn x on the slip zones;
-//! - the solid slips inward: slip(x) <= 0 for c < x < 1 (THEORY.md section 3);
+//! - the solid slips inward: slip(x) <= 0 for c < x < 1 (docs/theory.md (I2), (U1));
 //! - c is monotone in mu (non-decreasing) along each b*.
 
 use orthoslip::{Contact, Material, Method, Solution};

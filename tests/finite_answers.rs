@@ -1,5 +1,5 @@
 //! No NaN or infinity ever comes with status OK (issue 8, point 2): over the reduced plane
-//! (b* = 0.01 .. 0.99, mu~ = 0 and 1e-3 .. 1e6; THEORY.md section 4: the material
+//! (b* = 0.01 .. 0.99, mu~ = 0 and 1e-3 .. 1e6; docs/theory.md (R2): the material
 //! `effective(1, 1 - 2 b*, 1, 1)` with mu = mu~) and at extreme engineering materials, every
 //! method through `Contact`, whenever it returns Ok: c and 1 - c are finite and in [0, 1],
 //! the error estimates on c and on the tractions are not NaN (+infinity only for a closed

@@ -1,4 +1,4 @@
-//! Independent checks of `src/material.rs` (THEORY.md sections 1-2, paper eqs. (1)-(5)):
+//! Independent checks of `src/material.rs` (docs/theory.md §1-§2, paper eqs. (1)-(5)):
 //!
 //! 1. the Green's function constants A, B, C against a numerical Lekhnistskii solution of the
 //!    half-plane (characteristic roots from a companion-matrix eigen-solve, never the closed
@@ -7,7 +7,7 @@
 //! 2. the plane-strain reduction of paper eq. (3) against inverting the 3x3 normal-stress
 //!    compliance, taking the in-plane stiffness block (eps_33 = 0) and inverting it back;
 //! 3. admissibility against positive definiteness of the compliance (scaled eigenvalues);
-//! 4. b*, bp and bq (THEORY.md section 4).
+//! 4. b*, bp and bq (docs/theory.md (R1)).
 //!
 //! Each test prints its measured maximum differences (`--nocapture`).
 

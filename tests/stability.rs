@@ -1,4 +1,4 @@
-//! Behaviour at the edges of the (b*, mu~) plane (THEORY.md sections 4-5) and of the
+//! Behaviour at the edges of the (b*, mu~) plane (docs/theory.md §4-§6) and of the
 //! engineering constants that lead there: mu -> 0 and -> infinity, bp mu large, A -> 0
 //! (nu -> 1), kappa = 1 and kappa -> -nu, delta far from 1, near-incompressible plane strain,
 //! auxetic b* -> 1. Every method, called directly and through `Contact`, must return either a

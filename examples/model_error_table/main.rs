@@ -6,8 +6,8 @@
 //! runtime and how many entries are inf, i.e. where COUPLED failed).
 //!
 //! The grid spans b* = 0.005 .. 0.99 and mu~ = 1e-6 .. 1e6. The errors change fastest where
-//! the stick zone opens, around mu~ ~ b* (Goodman's c depends on b* / mu~ only, THEORY.md
-//! section 5), so log10 mu~ steps by 0.2 over -4 .. 1, which holds that transition for every
+//! the stick zone opens, around mu~ ~ b* (Goodman's c depends on b* / mu~ only, docs/theory.md
+//! (G1)), so log10 mu~ steps by 0.2 over -4 .. 1, which holds that transition for every
 //! b* of the grid, and more coarsely outside (c ~ 0 below; above, 1 - c settles towards its
 //! large-friction limit). At small b* that transition moves with log10 b*, so the rows there
 //! are spaced geometrically (factors up to 1.5); the rows close to b* = 1 are denser too.

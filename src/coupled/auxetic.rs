@@ -1,4 +1,4 @@
-//! The auxetic limit b* -> 1 (an isotropic solid with nu -> -1; THEORY.md section 5: the
+//! The auxetic limit b* -> 1 (an isotropic solid with nu -> -1; docs/theory.md (L3), (L5): the
 //! oscillation index eps = artanh(b*) / pi grows without bound). There the stick zone closes
 //! like a power of s = 1 - b*,
 //!   c = K(s) s^(1/k0),  k0 = 2 arctan(b* mu~) / pi = 1 - 2 g,

@@ -1,4 +1,4 @@
-//! The small-stick-zone regime (c -> 0, THEORY.md section 8): the full-slip limit problem
+//! The small-stick-zone regime (c -> 0, docs/theory.md (L1), (L2)): the full-slip limit problem
 //! and the asymptotic law of c.
 //!
 //! Full slip: q = mu p sgn x on the whole contact. Then (E1) reads H\[p\] = bp mu sgn(x) p,
@@ -14,7 +14,7 @@
 //! tractions by O(c^(2g)) in the norm of [`crate::problem::traction_distance`].
 //!
 //! The stick edge follows the law c ~ 4 (1 - b*^2)^(pi / (2 b* mu~)) (reduced variables,
-//! THEORY.md section 4), which tends to Goodman's 4 exp(-pi b* / (2 mu~)) as b* -> 0. Against
+//! docs/theory.md (R2)), which tends to Goodman's 4 exp(-pi b* / (2 mu~)) as b* -> 0. Against
 //! COUPLED (tests.rs) c / law = 1 + a1(b*) mu~ + O(mu~^2), a1 = -0.05 (b* = 0.1), -0.17 (0.3),
 //! -0.33 (0.5), -0.60 (0.7), -1.2 (0.9), -2.3 (0.99) (c below the law everywhere measured):
 //! the law is used only where its c is below the tolerance, and its error estimate is c

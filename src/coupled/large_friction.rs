@@ -1,4 +1,4 @@
-//! The large-friction regime (mu~ -> infinity, THEORY.md sections 5 and 8): the stick edge
+//! The large-friction regime (mu~ -> infinity, docs/theory.md §6 and (K6)): the stick edge
 //! and the tractions are analytic in 1/mu~ there (the edge exponent g ~ 1 / (pi b* mu~)
 //! enters through (x - c)^g = 1 + g ln(x - c) + ..., and on the slip zones q = mu p stays
 //! finite while p = q / mu falls like 1/mu~). Measured with the panels at b* = 0.95:

@@ -1,6 +1,6 @@
 //! Panels on 0 <= x <= 1 (p even and q odd supply -1 < x < 0) graded geometrically towards
 //! the singular points x = c and x = 1, and the basis carried by each panel: weighted
-//! Legendre polynomials ([`Basis`]) whose weights hold the local exponents (THEORY.md section 5):
+//! Legendre polynomials ([`Basis`]) whose weights hold the local exponents (docs/theory.md (X1), (X2), (K1)):
 //! - central panel [-l, l]: p and q / x polynomials in x^2;
 //! - stick panels: p, q polynomials; the one ending at c adds q (c - x)^g P_k (at large
 //!   friction ((c - x)^g - 1) / g P_k in the local variable, [`LOG_BELOW`]) and the wrong-c

@@ -1,6 +1,6 @@
 //! orthoslip's solver of the full coupled partial-slip problem (E1)-(E4) (METHOD_COUPLED).
 //!
-//! Method (THEORY.md sections 3-5):
+//! Method (docs/theory.md §10, (K1)-(K6)):
 //! - the exact reduction (bp, bq, mu) -> (b*, b*, mu / delta), q = delta q~ (bp > 0);
 //! - for a trial stick edge c, a collocation system on panels graded geometrically towards
 //!   x = c and x = 1 (`mesh`), whose bases carry the local exponents: (1 - x)^(-g) at the
@@ -243,7 +243,7 @@ const LOOSEST_XTOL: f64 = 1e-3;
 
 /// Polynomial orders tried in turn (per panel) after the scan order: steps of 2 or 3, so
 /// that the order whose error first falls below the tolerance is soon confirmed by the next
-/// (the error falls by 10-100 per step of 2, THEORY.md section 5 / tests.rs). Up to 34: at
+/// (the error falls by 10-100 per step of 2, docs/theory.md (K5) / tests.rs). Up to 34: at
 /// b* = 0.99, mu~ = 215 the tractions reach 1e-10 only at order 34 (1.3e-10 at 26); where the
 /// unknowns grow past [`MAX_UNKNOWNS`] first (thin slip zones) the ladder stops before.
 const ORDERS: [usize; 10] = [6, 8, 11, 13, 16, 19, 22, 26, 30, 34];

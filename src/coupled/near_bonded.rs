@@ -1,8 +1,8 @@
-//! The near-bonded regime (1 - c -> 0, THEORY.md sections 5 and 8): the bonded punch's
+//! The near-bonded regime (1 - c -> 0, docs/theory.md (L3), (L4)): the bonded punch's
 //! tractions and the size of the slip layer.
 //!
 //! Bonded punch: (E1) and (E2) on the whole contact. In the reduced variables (q = delta q~,
-//! THEORY.md section 4) w = p + i q~ solves H\[w\] = -i b* w, whose solution with int p = 1
+//! docs/theory.md (R2)) w = p + i q~ solves H\[w\] = -i b* w, whose solution with int p = 1
 //! and q odd is
 //!   p + i q~ = cosh(pi eps) / (pi sqrt(1 - x^2)) exp(i eps ln((1 + x) / (1 - x))),
 //!   eps = artanh(b*) / pi,

@@ -4,7 +4,7 @@
 //! minus the mirrored one at -x). Unknowns: the coefficients of the panel bases of
 //! [`super::mesh`], with the two wrong-c modes |x - c|^(g-1) as one unknown ([`WrongCFold`])
 //! whose coefficient, the defect, vanishes exactly at the physical c (the compatibility
-//! condition, THEORY.md section 5). On the slip panels the unknowns are scaled to q = mu p.
+//! condition, docs/theory.md (X3), (K3)). On the slip panels the unknowns are scaled to q = mu p.
 //!
 //! Each panel gets OVERSAMPLE times as many collocation points (Gauss-Legendre points of the
 //! panel) as it has unknowns; (E1) with p ~ (1-x)^(-g) has index 1, so (E4) fixes the scale.

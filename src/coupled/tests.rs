@@ -7,7 +7,7 @@ use super::*;
 use crate::numerics::quadrature::{gauss_jacobi, gauss_legendre};
 use std::f64::consts::PI;
 
-/// Isotropic plane strain, nu = 0.3: bp = bq = (1 - 2 nu) / (2 (1 - nu)) (THEORY.md section 2:
+/// Isotropic plane strain, nu = 0.3: bp = bq = (1 - 2 nu) / (2 (1 - nu)) (docs/theory.md (M7), (R1):
 /// A = (1-2nu)(1+nu)/E, B = C = 2(1-nu^2)/(pi E), bp = A / (pi C)).
 fn steel() -> f64 {
     let nu = 0.3;
@@ -15,7 +15,7 @@ fn steel() -> f64 {
     a / (PI * c)
 }
 
-/// Carbon/epoxy ply in plane stress (THEORY.md section 2): (bp, bq).
+/// Carbon/epoxy ply in plane stress (docs/theory.md (M3)): (bp, bq).
 fn carbon() -> (f64, f64) {
     let ply = crate::material::Material::plane_stress(181e9, 10.3e9, 7.17e9, 0.28).unwrap();
     let k = ply.coupling(0.0);
@@ -421,7 +421,7 @@ fn families_are_indexed_by_basis() {
 /// Large friction (g -> 0, where the edge blocks use the log weights): the answers at
 /// mu~ = 1e4, 1e5 and 1e6 (g = 7e-5 .. 7e-7) at b* = 0.45 meet their tolerance, satisfy (E1)
 /// and (E2) by the independent quadrature, and 1 - c tends to the finite limit an independent
-/// solver found (about 1.1e-3 at b* = 0.45, THEORY.md section 8; 1.15e-3 in issue 8).
+/// solver found (about 1.1e-3 at b* = 0.45, docs/theory.md §6; 1.15e-3 in issue 8).
 #[test]
 fn large_friction_tends_to_a_finite_slip_zone() {
     let b = 0.45;
@@ -670,7 +670,7 @@ fn fixed_edge_panels_match_the_search() {
 }
 
 /// Issue 8, point 4: where an independent solver reported the admissible solution lost at
-/// large b* and friction (THEORY.md section 8: beyond mu~ ~ 30-100 at b* = 0.83-0.9 its first
+/// large b* and friction (docs/theory.md §5, "Which root": beyond mu~ ~ 30-100 at b* = 0.83-0.9 its first
 /// root had p < 0, c ~ 0.999), the admissible root is there and is the first one: the defect
 /// at order 13, scanned in lc = ln(c / (1 - c)) from c = 2e-9 to 1 - c = 1e-7 in steps of
 /// 0.1, changes sign upwards first at COUPLED's c, whose solution is admissible, and the later

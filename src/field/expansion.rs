@@ -12,7 +12,7 @@
 //! - or by sampling its tractions on panels graded towards c and 1 ([`sample`]), given the
 //!   exponents it knows: the punch edge's g, and on the stick side of c
 //!   q - mu p = (c - x)^s times an analytic function (p analytic across c), s = 1/2 for
-//!   GOODMAN and SPENCE (the sqrt(c - x) of their stick-zone shear, THEORY.md section 5).
+//!   GOODMAN and SPENCE (the sqrt(c - x) of their stick-zone shear, docs/theory.md (G3), (S3)).
 
 use crate::numerics::cauchy::Weight;
 use crate::numerics::orthopoly::{legendre, legendre_sum};

@@ -4,7 +4,7 @@
 //! every method alike.
 //!
 //! # Field solution (Lekhnistskii)
-//! With the characteristic roots mu_k = i beta_k (THEORY.md section 2: beta1 beta2 = delta^2,
+//! With the characteristic roots mu_k = i beta_k (docs/theory.md (M6): beta1 beta2 = delta^2,
 //! beta1 + beta2 = delta sqrt(2 (1 + kappa)), Re beta_k > 0), the stresses are
 //! sxx = 2 Re sum mu_k^2 F_k(z_k), syy = 2 Re sum F_k(z_k), sxy = -2 Re sum mu_k F_k(z_k) with
 //! z_k = x + mu_k y in the lower half-plane. Writing F_k = (i/2) (a_k G_p + b_k G_q) with the
@@ -32,7 +32,7 @@
 //! delta sqrt(2 (1 + kappa)) bp = 1 - nu), -k delta^2 for GOODMAN (g = 1/2).
 //!
 //! # Slip
-//! The tangential surface displacement relative to the punch, per P/E (THEORY.md section 3,
+//! The tangential surface displacement relative to the punch, per P/E (docs/theory.md (U1), (F4),
 //! pi B E = sqrt(2 (1 + kappa)) / delta, pi B E bq = A E = 1 - nu):
 //!   u(x) = -(1 - nu) int_c^x p dt - (sqrt(2 (1 + kappa)) / delta) int_c^x H[q] dt, x > c,
 //! 0 on the stick zone, odd ([`slip`]).

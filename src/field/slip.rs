@@ -1,5 +1,5 @@
 //! The slip: tangential surface displacement of the solid relative to the punch, per P/E
-//! (THEORY.md section 3 with pi B E = sqrt(2 (1 + kappa)) / delta and pi B E bq = 1 - nu):
+//! (docs/theory.md (U1), (F4), with pi B E = sqrt(2 (1 + kappa)) / delta and pi B E bq = 1 - nu):
 //!   u(x) = -(1 - nu) int_c^x p - (sqrt(2 (1 + kappa)) / (pi delta)) (L_q(x) - L_q(c))
 //! for x > c, with L_q(x) = int q(s) ln|x - s| ds (so that (1/pi) dL_q/dx = H[q]); 0 on the
 //! stick zone, odd in x. Beyond the punch (|x| > 1) it is the surface displacement relative to

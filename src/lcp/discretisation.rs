@@ -1,6 +1,6 @@
 //! Discretisation of (E1)-(E4) in displacement (Volterra) form on N uniform panels of
 //! [0, 1] with piecewise-constant tractions, p even and q odd (paper eqs. (4), (5), (7),
-//! (8); THEORY.md sections 3 and 6).
+//! (8); docs/theory.md §3 and (P1), (P2)).
 //!
 //! With L[f](x) = (1/pi) int_{-1}^{1} f(t) ln|x - t| dt, H[f] = d/dx L[f], so integrating
 //! the gradients from the centre gives, at the panel midpoints x_i:

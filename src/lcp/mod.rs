@@ -1,4 +1,4 @@
-//! The paper's numerical method (its section 4; THEORY.md section 6): (E1)-(E4) in
+//! The paper's numerical method (its section 4; docs/theory.md §9): (E1)-(E4) in
 //! displacement (Volterra) form on a uniform grid, posed as a linear complementarity
 //! problem between the tangential slip and the friction reserve mu p - |q| at each point,
 //! solved by a smoothing Newton method.
@@ -113,7 +113,7 @@ fn solve_level(k: &Coupling, grid: Grid, start: Option<&LcpSolution>) -> Result<
         });
     }
     // On the coarsest grid: continuation in mu from the small-friction regime, which
-    // selects the physical solution (THEORY.md section 5: for large mu the LCP has other
+    // selects the physical solution (docs/theory.md (P3): for large mu the LCP has other
     // solutions, e.g. full slip); on finer grids: the coarser q as the start.
     let z0 = match start {
         Some(s) => (0..n).map(|i| s.tractions(grid.mid(i)).1 / k.mu).collect(),

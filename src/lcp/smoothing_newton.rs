@@ -1,6 +1,6 @@
 //! Smoothing Newton method for the affine LCP a(z) >= 0, b(z) >= 0, a_i b_i = 0
 //! (the paper's "Newton-based optimization algorithm based on smoothing approximation",
-//! section 4; THEORY.md section 6).
+//! section 4; docs/theory.md (P3)).
 //!
 //! Smoothed Fischer-Burmeister function phi(eps, a, b) = a + b - sqrt(a^2 + b^2 + 2 eps^2)
 //! (phi = 0 iff a, b > 0 and a b = eps^2; at eps = 0 iff a, b >= 0 and a b = 0), and the

@@ -2,7 +2,7 @@
 //!
 //! At the last stick points the discrete friction reserve r = mu p - q is locally linear
 //! in x, and at the first slip points the discrete slip s grows like (x - c)^(3/2) (the
-//! continuous solution has r ~ (c - x)^g and s ~ (x - c)^(1 + g), THEORY.md section 5, but
+//! continuous solution has r ~ (c - x)^g and s ~ (x - c)^(1 + g), docs/theory.md (X2), but
 //! piecewise-constant tractions do not resolve the |x - c|^g layer within a cell). So r and
 //! s^(2/3) are extrapolated linearly from their two grid values nearest to c, giving the
 //! distances d_r = c - x_{k-1} from the last stick point and d_s = x_k - c from the first

@@ -1,7 +1,7 @@
 //! Tests of the LCP method against independent references: Goodman's closed-form
 //! condition at bp = 0, refinement of its own sequence (Richardson) for the coupled case,
 //! the complementarity and friction inequalities, force balance and the reduction of
-//! THEORY.md section 4.
+//! docs/theory.md (R2).
 
 use super::*;
 use crate::goodman::c_by_bisection;
@@ -9,7 +9,7 @@ use crate::goodman::c_by_bisection;
 /// Isotropic plane strain, nu = 0.3: bp = bq = (1 - 2 nu) / (2 (1 - nu)).
 const STEEL: f64 = 0.4 / 1.4;
 
-/// Carbon/epoxy ply, plane stress (THEORY.md section 2): (bp, bq).
+/// Carbon/epoxy ply, plane stress (docs/theory.md (M3)): (bp, bq).
 fn carbon_epoxy() -> (f64, f64) {
     let (e11, e22, g12, nu12): (f64, f64, f64, f64) = (181.0, 10.3, 7.17, 0.28);
     let e = (e11 * e22).sqrt();
@@ -98,7 +98,7 @@ fn coupled_edge_converges_to_the_richardson_limit_of_its_own_sequence() {
         );
     }
     assert!(errors[3] < errors[0] / 3.0, "{errors:?}");
-    // Goodman neglects the coupling: a few 1e-2 above (THEORY.md section 5).
+    // Goodman neglects the coupling: a few 1e-2 above (docs/theory.md §7).
     let gap = c_by_bisection(k.bq / k.mu) - reference;
     assert!((0.01..0.1).contains(&gap), "Goodman - coupled = {gap}");
 }

@@ -3,7 +3,7 @@
 //! ([`crate::problem::traction_distance`]), used for their error estimates and by
 //! METHOD_AUTO.
 //!
-//! c depends on the material and the friction only through (b*, mu~) (THEORY.md section 4),
+//! c depends on the material and the friction only through (b*, mu~) (docs/theory.md (R2)),
 //! for the approximations as for the exact problem, so the model error is a function on that
 //! plane. It is measured offline with the COUPLED solver (c to [`FLOOR`], the tractions to a
 //! tenth of [`TRACTION_FLOOR`]) on a grid of b* and
@@ -31,7 +31,7 @@
 //! 0.486 in c, 0.457 and 0.468 in the tractions.
 //!
 //! The traction error is tabulated as max(int |dp|, int |dq~|) in the reduced problem
-//! (q = delta q~ with the same p, THEORY.md section 4), so that the bound in a material with
+//! (q = delta q~ with the same p, docs/theory.md (R2), (T3)), so that the bound in a material with
 //! delta != 1 is (1 + delta) times it ([`traction_bound`]).
 //!
 //! Why a table and not an a-posteriori residual: the residual of eq. (10) for Goodman's p0 is

@@ -1,7 +1,7 @@
 //! Cauchy (finite Hilbert) transforms of Jacobi-weighted Legendre polynomials on [-1, 1]:
 //! C_k(y) = PV int_{-1}^{1} w(t) P_k(t) / (y - t) dt for the end weights w = 1, (1 - t)^e,
 //! (1 + t)^e with e in (-1, 1) (the local exponents g, g - 1, -g of the contact tractions,
-//! THEORY.md section 5).
+//! docs/theory.md (X1), (X2), (K2)).
 //!
 //! Real y (the solvers): near the interval (|y| <= 1.1) C_0 is evaluated in closed form and
 //! the rest follow from the exact recurrence (k+1) C_{k+1} + k C_{k-1} = (2k+1) (y C_k - M_k),

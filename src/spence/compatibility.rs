@@ -1,4 +1,4 @@
-//! The compatibility condition (THEORY.md section 5) for Spence's pressure
+//! The compatibility condition (docs/theory.md (X3), (S2)) for Spence's pressure
 //! p_S = (1 - x^2)^(-g) / B(1/2, 1 - g), with h = 1/2 - g = atan(bp mu) / pi, m = c^2:
 //!   int_0^c (1 - x^2)^(-g) / sqrt(c^2 - x^2) dx = (pi/2) 2F1(g, 1/2; 1; m)        (x = c sqrt(v)),
 //!   int_c^1 (1 - t^2)^(-g) / sqrt(t^2 - c^2) dt

@@ -1,4 +1,4 @@
-//! Spence's approximation (THEORY.md section 5): the pressure keeps the slip-zone coupling only
+//! Spence's approximation (docs/theory.md §8, (S1)-(S3)): the pressure keeps the slip-zone coupling only
 //! through its edge exponent, p_S = (1 - x^2)^(-g) / B(1/2, 1 - g) with
 //! g = 1/2 - atan(bp mu) / pi; the stick half-width c_S solves the compatibility condition
 //! with p_S (hypergeometric functions, `compatibility`); q_S is the bounded solution of (E2)

@@ -1,6 +1,6 @@
 //! Checks of Spence's approximation against independent references: tanh-sinh quadrature of
 //! the defining integrals, Goodman's equation through `ellip::ellipk`, the (E2) residual of
-//! q_S by quadrature, and the reduction of THEORY.md section 4.
+//! q_S by quadrature, and the reduction (R2) of docs/theory.md.
 
 use super::*;
 use crate::error::Error;
@@ -440,7 +440,7 @@ fn stick_zone_below_the_smallest_double_is_empty() {
 
 #[test]
 fn stick_shear_is_admissible() {
-    // |q| <= mu p on the stick zone (THEORY.md section 3), on a grid refined towards c.
+    // |q| <= mu p on the stick zone (docs/theory.md (I1)), on a grid refined towards c.
     for b in [0.05, steel(), 0.7, 0.95] {
         for mu in [0.01, 0.1, 0.3, 1.0, 10.0, 1e3] {
             let s = solve(&Coupling { bp: b, bq: b, mu }).unwrap();

@@ -1,5 +1,5 @@
 //! A tabulated exact stick edge: piecewise Chebyshev interpolants of COUPLED's
-//! lc = ln(c / (1 - c)) over the reduced plane (b*, mu~) (THEORY.md section 4: c depends on
+//! lc = ln(c / (1 - c)) over the reduced plane (b*, mu~) (docs/theory.md (R2), (T5): c depends on
 //! these two alone), so that c alone costs a lookup instead of a root search.
 //!
 //! Coordinates, chosen so that lc is smooth and the table's lower edge follows the stick

@@ -1,4 +1,4 @@
-/* Test materials and the reference Green's constants of THEORY.md section 2, computed here
+/* Test materials and the reference Green's constants of docs/theory.md (M7), computed here
  * from the engineering constants independently of the library (valid C11 and C++17). */
 #ifndef ORTHOSLIP_TEST_ELASTIC_H
 #define ORTHOSLIP_TEST_ELASTIC_H
@@ -41,7 +41,7 @@ static inline const test_material *test_materials(size_t *count)
     return list;
 }
 
-/* THEORY.md section 2: compliances with tensor shear strain, reduced for plane strain by
+/* docs/theory.md (M1)-(M4): compliances with tensor shear strain, reduced for plane strain by
  * s'ij = sij - si3 sj3 / s33; E = 1/sqrt(s11 s22), nu = -E s12, delta^4 = s22/s11,
  * kappa = E (s12 + s66); A = (1 - nu)/E, B = sqrt(2(1 + kappa))/(pi delta E),
  * C = delta sqrt(2(1 + kappa))/(pi E). */

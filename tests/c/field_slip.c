@@ -1,5 +1,5 @@
 /* The slip (orthoslip_solution_slip) against the tangential displacement gradient of
- * THEORY.md sections 1 and 3 integrated by GSL from the library's own tractions (valid C11
+ * docs/theory.md (U1), (F4) integrated by GSL from the library's own tractions (valid C11
  * and C++17): per P/E, u(x) = -pi B E int_c^x (bq p + H[q]) dt for c < x < 1, with
  * H[q] = PV int q(t)/(t' - t) dt / pi (hilbert.h) and B, bq = A/(pi B) the closed forms of
  * elastic.h; the outer integral by GSL QAGS (its extrapolation handles the (t - c)^g start).

@@ -1,10 +1,10 @@
 /* Goodman's stick half-width against GSL, and the Green's constants against the closed forms
- * of THEORY.md section 2.
+ * of docs/theory.md §2.
  * - A, B, C (orthoslip_material_green) and E, nu, delta, kappa (orthoslip_material_effective)
  *   equal the closed forms computed here from the engineering constants (relative 1e-12);
  *   isotropic steel also matches Johnson's A = (1-2nu)(1+nu)/E, B = C = 2(1-nu^2)/(pi E).
- * - METHOD_GOODMAN: c solves K(sqrt(1-c^2))/K(c) = bq/mu with bq = A/(pi B) (THEORY.md
- *   section 5); the reference comes from gsl_root_fsolver_brent on the GSL complete elliptic
+ * - METHOD_GOODMAN: c solves K(sqrt(1-c^2))/K(c) = bq/mu with bq = A/(pi B) (docs/theory.md
+ *   (G1)); the reference comes from gsl_root_fsolver_brent on the GSL complete elliptic
  *   integrals: |c - c_ref| < 1e-12 and 1 - c (orthoslip_solution_slip_width) to relative 1e-10.
  *   The root is sought in s = min(c, sqrt(1-c^2)) <= 1/sqrt(2) through
  *   g(s) = K(sqrt(1-s^2))/K(s) = RF(0, s^2, 1)/K(s), so that both c and 1 - c = s^2/(1+c)

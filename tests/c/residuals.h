@@ -1,4 +1,4 @@
-/* Checks of a solved contact against the boundary-value problem of THEORY.md section 3
+/* Checks of a solved contact against the boundary-value problem of docs/theory.md §3
  * (paper eqs. (9)-(11)), by GSL quadrature of the library's own p and q (valid C11 and C++17):
  * - (E1) C PV int p(t)/(x-t) dt - A q(x) = 0 on |x| < 1 (paper eq. (10)), relative to the
  *   largest of the two terms and A mu p(x), the bound of the second (both terms vanish at

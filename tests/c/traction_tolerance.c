@@ -10,7 +10,7 @@
 
 #define SENTINEL (-123.456)
 
-/* The reduced scene b* = 0.2, mu~ = 100 (THEORY.md section 4: effective(1, 1 - 2 b*, 1, 1)),
+/* The reduced scene b* = 0.2, mu~ = 100 (docs/theory.md (R2): effective(1, 1 - 2 b*, 1, 1)),
  * where GOODMAN's c is within 1e-6 but its tractions are off by a few percent. */
 static orthoslip_contact *reduced_scene(void)
 {
