@@ -81,3 +81,17 @@ fn residuals_off_the_collocation_points() {
     let total = f.integral_of_p();
     assert!((total - 1.0).abs() < 1e-13, "int p = {total}");
 }
+
+#[test]
+fn agrees_with_the_table_on_a_coarse_grid() {
+    let (answered, tried, worst) = sweep(5);
+    eprintln!("answered {answered} of {tried}; largest distance / (bound + estimate) {worst:.2}");
+    assert!(answered * 2 >= tried, "answered only {answered} of {tried}");
+}
+
+#[test]
+#[ignore = "slow tier: a 24 x 24 grid of the table's coordinates"]
+fn agrees_with_the_table_on_a_fine_grid() {
+    let (answered, tried, worst) = sweep(24);
+    eprintln!("answered {answered} of {tried}; largest distance / (bound + estimate) {worst:.2}");
+}
