@@ -5,6 +5,7 @@
 
 use super::*;
 use crate::lcp::tests::carbon_epoxy;
+use crate::problem::Profile;
 
 fn ply(mu: f64) -> Coupling {
     let (bp, bq) = carbon_epoxy();
@@ -180,6 +181,66 @@ fn goodman_limit_slip_spreads_backwards_and_the_trailing_zone_sticks_at_once() {
     }
 }
 
+/// Q/P at which the Goodman-limit stick set ends at c2 (docs/theory_tangential.md (T11)):
+/// Q/P = int_{c2}^{c} (mu p0 - q0)(s) sqrt((1 + s) / (s - c2)) ds, with Goodman's
+/// normal-load shear q0 (an elliptic-integral closed form, `goodman`) — independent of the
+/// grid.
+fn goodman_load_for_c2(k: &Coupling, c2: f64) -> f64 {
+    let g = crate::goodman::solve(k).unwrap();
+    let c = g.edge().c;
+    let q0 = |s: f64| s.signum() * g.half_line_tractions(s.abs()).1;
+    // pieces split where q0 is not smooth (+-c: square roots; graded towards every end)
+    let mut cuts = vec![c2];
+    cuts.extend([-c, 0.0].iter().filter(|&&v| v > c2));
+    cuts.push(c);
+    cuts.windows(2)
+        .flat_map(|w| crate::numerics::quadrature::graded_rule(w[0], w[1], 0.25, 1e-14, 12))
+        .map(|(s, w)| w * (k.mu * crate::goodman::p0(s) - q0(s)) * ((1.0 + s) / (s - c2)).sqrt())
+        .sum()
+}
+
+#[test]
+fn goodman_limit_stick_end_follows_the_compatibility_condition() {
+    let (_, bq) = carbon_epoxy();
+    let k = Coupling {
+        bp: 0.0,
+        bq,
+        mu: 0.3,
+    };
+    // gross sliding as c2 -> -1: Q/P -> mu
+    let edge = goodman_load_for_c2(&k, -1.0 + 1e-12);
+    assert!((edge - k.mu).abs() < 1e-7, "{edge}");
+    let c = crate::goodman::solve(&k).unwrap().edge().c;
+    for qp in [0.1, 0.2] {
+        // c2 by bisection on the (decreasing in c2) load
+        let (mut lo, mut hi) = (-1.0 + 1e-12, c);
+        for _ in 0..60 {
+            let mid = 0.5 * (lo + hi);
+            if goodman_load_for_c2(&k, mid) > qp {
+                lo = mid;
+            } else {
+                hi = mid;
+            }
+        }
+        let exact = 0.5 * (lo + hi);
+        let errors: Vec<f64> = [50, 100, 200]
+            .iter()
+            .map(|&n| {
+                let mut hist = History::new(&k, n).unwrap();
+                hist.load(qp, 1).unwrap();
+                hist.state().stick.1 - exact
+            })
+            .collect();
+        eprintln!(
+            "Goodman limit Q/P = {qp}: c2 = {exact:.6}, grid errors (n = 50, 100, 200) {errors:?}"
+        );
+        // first order: error ~ 0.2 h, halving with h
+        assert!(errors[2].abs() < 0.5 / 200.0, "{errors:?}");
+        let order = (errors[1] / errors[2]).abs().log2();
+        assert!((0.7..1.3).contains(&order), "{errors:?}");
+    }
+}
+
 #[test]
 fn energy_balance_over_cycles_and_dissipation_from_q_times_slip() {
     let k = ply(0.3);
@@ -221,6 +282,41 @@ fn bad_input_and_failed_steps_leave_the_history_unchanged() {
     assert!(History::new(&Coupling { mu: 0.0, ..k }, 30).is_err());
     assert!(History::new(&k, 3).is_err());
     assert!(cycles(&k, 30, 0.0, 1, 2).is_err());
+}
+
+#[test]
+fn cycles_shake_down_repeat_or_decay_with_the_coupling() {
+    // The three behaviours of docs/theory_tangential.md section 7, on a coarse grid.
+    let n = 60;
+    // the default ply: only the first unloading dissipates
+    let ply_run = cycles(&ply(0.3), n, 0.18, 3, 4).unwrap();
+    let w: Vec<f64> = ply_run.cycles.iter().map(|c| c.dissipation).collect();
+    assert!(w[0] > 1e-3 && w[1] < 1e-12 && w[2] < 1e-12, "{w:?}");
+    // b* = 0.5, mu = 0.5 at 0.9 mu P: a steady slip cycle from the second cycle
+    let iso = |b: f64, mu: f64| Coupling { bp: b, bq: b, mu };
+    let steady = cycles(&iso(0.5, 0.5), n, 0.45, 3, 4).unwrap();
+    let w: Vec<f64> = steady.cycles.iter().map(|c| c.dissipation).collect();
+    assert!(w[1] > 1e-3 && (w[2] - w[1]).abs() < 1e-9 * w[1], "{w:?}");
+    // b* = 0.9, mu = 1 at 0.3 mu P: decaying, with an edge zone slipping the other way
+    let decay = cycles(&iso(0.9, 1.0), n, 0.3, 3, 4).unwrap();
+    let w: Vec<f64> = decay.cycles.iter().map(|c| c.dissipation).collect();
+    assert!(w[0] > w[1] && w[1] > w[2] && w[2] > 0.2 * w[1], "{w:?}");
+    let up = decay.first_loading.last().unwrap();
+    let rev = up
+        .zones
+        .iter()
+        .take_while(|z| **z == Zone::SlipPositive)
+        .count();
+    assert!(rev >= 1 && up.stick.0 > -1.0, "{rev} {:?}", up.stick);
+    // and at 0.6 mu P the leading edge's pressure turns negative on the unloading (at
+    // Q/P = -0.48 on 100 panels; 60 are too coarse to see it): refused, nothing kept
+    let mut hist = History::new(&iso(0.9, 1.0), 100).unwrap();
+    hist.load(0.6, 5).unwrap();
+    let before = hist.state().clone();
+    let r = hist.load(-0.6, 10);
+    assert!(matches!(r, Err(Error::NoAdmissibleSolution(_))), "{r:?}");
+    assert_eq!(hist.state().q, before.q);
+    assert_eq!(hist.state().q_over_p, before.q_over_p);
 }
 
 /// Observed orders log2(|d_j| / |d_{j+1}|) of the differences between successive values.
