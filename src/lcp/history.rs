@@ -3,7 +3,7 @@
 //!
 //! The whole contact [-1, 1] on 2n uniform panels (no symmetry: q is no longer odd),
 //! piecewise-constant p and q. Each load step is one complementarity problem whose data is
-//! the previous state (T1)-(T6):
+//! the previous state (docs/theory_tangential.md (T1)-(T7)):
 //! - (E1) for the totals, with the force balance: p = p_bar + bp K q (`FullLine`);
 //! - the surface's tangential displacement e = -(bq S p + L q) (units of pi B P; u = pi B P e
 //!   up to a constant) and the punch's rigid displacement D; the slip increment of node i is
@@ -19,6 +19,12 @@
 //!
 //! Energies are in units of pi B P^2 per unit thickness (times pi B E = sqrt(2 (1 + kappa)) /
 //! delta for units of P^2 / E); displacements in units of pi B P.
+//!
+//! Accuracy: first order in h = 1/n for the stick-set ends (the normal-load LCP's rule); the
+//! dissipation sums mu p |ds| with p at the end of each step, first order in the load step.
+//! Cost: the operators once (dense, order 2n), then one dense LU of order 2n + 1 per Newton
+//! step, 3-20 Newton steps per load step (measured, one core: n = 200, five cycles of 40
+//! steps, 3 s; n = 800, one cycle of 20 steps, 45 s).
 
 use super::discretisation::{FullLine, Grid};
 use super::smoothing_newton::{self, BoxMcp, BoxRoot, Controls};

@@ -382,7 +382,7 @@ fn stick_edges_converge_at_first_order_in_the_panels() {
 }
 
 #[test]
-#[ignore = "slow tier: N = 100 .. 800 (about 90 s in release on one core)"]
+#[ignore = "slow tier: N = 100 .. 800 (60 s in release, measured on 2 shared cores)"]
 fn refinement_table_in_the_panels() {
     let ns = [100, 200, 400, 800];
     let pts: Vec<[f64; 3]> = ns.iter().map(|&n| refinement_point(n, 5)).collect();
