@@ -397,3 +397,21 @@ fn refinement_table_in_the_panels() {
         "c2 {c2:?} orders {o:?}"
     );
 }
+
+#[test]
+fn goodman_limit_shakes_down_after_the_first_unloading_at_every_amplitude() {
+    // bp = 0: Melan's theorem for frictional systems without normal-tangential coupling
+    // (q_r = 0 keeps (Q(t)/P) p0 inside the friction bound for |Q*| < mu P): the grid shakes
+    // down after the first unloading at Q*/(mu P) = 0.3, 0.6, 0.9.
+    let (_, bq) = carbon_epoxy();
+    let k = Coupling {
+        bp: 0.0,
+        bq,
+        mu: 0.3,
+    };
+    for amp in [0.3, 0.6, 0.9] {
+        let run = cycles(&k, 60, amp * k.mu, 3, 4).unwrap();
+        let w: Vec<f64> = run.cycles.iter().map(|c| c.dissipation).collect();
+        assert!(w[0] > 1e-4 && w[1] < 1e-12 && w[2] < 1e-12, "{amp}: {w:?}");
+    }
+}
