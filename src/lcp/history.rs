@@ -50,8 +50,9 @@ pub enum Zone {
 pub struct State {
     /// Q / P.
     pub q_over_p: f64,
-    /// Panel values of p and q on the 2n panels of [-1, 1] (units of P / a).
+    /// Panel values of p on the 2n panels of [-1, 1] (units of P / a).
     pub p: Vec<f64>,
+    /// Panel values of q (units of P / a).
     pub q: Vec<f64>,
     /// Tangential displacement of the solid's surface at the midpoints (units of pi B P,
     /// gauge: the symmetric Green's function; relative displacements are gauge-free).
@@ -506,6 +507,7 @@ pub struct Cycles {
     pub normal_load: State,
     /// States of the first loading 0 -> Q*.
     pub first_loading: Vec<State>,
+    /// The cycles +Q* -> -Q* -> +Q*, in order.
     pub cycles: Vec<Cycle>,
 }
 
