@@ -168,6 +168,76 @@ pub(crate) fn assemble(grid: Grid, k: &Coupling) -> Result<AffineLcp> {
     })
 }
 
+/// The whole contact [-1, 1] without symmetry (for loads that break it: docs/theory_tangential.md, (E1)-(E4) of docs/theory.md §3
+/// with int q = Q/P != 0): 2n uniform panels of width h = 1/n, midpoints
+/// x_i = -1 + (i + 1/2) h, piecewise-constant p and q.
+///
+/// - `l`: L_ij = (1/pi) int_{panel j} ln|x_i - t| dt (symmetric Toeplitz);
+/// - `s`: the symmetric running integral S f(x_i) = (int_{-1}^{x_i} f - int_{x_i}^1 f) / 2,
+///   S_ij = sgn(i - j) h / 2 (antisymmetric; the kernel sgn(x - t) / 2 of the Green's
+///   function's A terms in the gauge that makes them reciprocal);
+/// - (E1) with the force balance, L p - bp S q = W (W: an unknown constant), h sum p = 1,
+///   solved as p = `p_bar` + bp K q and W = W_bar + bp `wk`. q (the constant W_bar, a gauge
+///   of the normal displacement, is not kept).
+pub(crate) struct FullLine {
+    /// Panels per half-width.
+    pub n: usize,
+    /// Panel width 1 / n.
+    pub h: f64,
+    pub l: Mat<f64>,
+    pub s: Mat<f64>,
+    pub p_bar: Vec<f64>,
+    pub k: Mat<f64>,
+    pub wk: Vec<f64>,
+}
+
+impl FullLine {
+    /// Midpoint of panel i (0 <= i < 2n).
+    pub(crate) fn mid(&self, i: usize) -> f64 {
+        -1.0 + (i as f64 + 0.5) * self.h
+    }
+
+    /// The operators on 2n panels (n panels per half-width).
+    pub(crate) fn new(n: usize) -> Result<Self> {
+        let m = 2 * n;
+        let h = 1.0 / n as f64;
+        let toeplitz: Vec<f64> = (0..m)
+            .map(|d| {
+                let d = d as f64;
+                log_integral((d - 0.5) * h, (d + 0.5) * h) / PI
+            })
+            .collect();
+        let l = Mat::from_fn(m, m, |i, j| toeplitz[i.abs_diff(j)]);
+        let s = Mat::from_fn(m, m, |i, j| match i.cmp(&j) {
+            std::cmp::Ordering::Greater => 0.5 * h,
+            std::cmp::Ordering::Less => -0.5 * h,
+            std::cmp::Ordering::Equal => 0.0,
+        });
+        // Unknowns (p, W); rows: L p - W = rhs at the midpoints, then h sum p = 1.
+        let system = Mat::from_fn(m + 1, m + 1, |i, j| match (i < m, j < m) {
+            (true, true) => l[(i, j)],
+            (true, false) => -1.0,
+            (false, true) => h,
+            (false, false) => 0.0,
+        });
+        let lu = Lu::new(system)?;
+        let mut unit = vec![0.0; m + 1];
+        unit[m] = 1.0;
+        let bar = lu.solve_vec(&unit)?;
+        let mut rhs = Mat::from_fn(m + 1, m, |i, j| if i < m { s[(i, j)] } else { 0.0 });
+        lu.solve_in_place(rhs.as_mut())?;
+        Ok(Self {
+            n,
+            h,
+            p_bar: bar[..m].to_vec(),
+            k: rhs.subrows(0, m).to_owned(),
+            wk: (0..m).map(|j| rhs[(m, j)]).collect(),
+            l,
+            s,
+        })
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -8,6 +8,8 @@
 //!   affine LCP in q / mu.
 //! - `smoothing_newton`: smoothed Fischer-Burmeister + Qi-Sun-Zhou smoothing Newton.
 //! - `stick_edge`: c interpolated between the last stick and the first slip point.
+//! - `history`: the same grid on the whole contact with a loading history: the tangential
+//!   load Q after P, moved in steps and cycled (issue 27; docs/theory_tangential.md).
 //!
 //! Accuracy: first order in c (measured against Goodman at bp = 0: |c - c*| <= 0.16 h
 //! for h = 1/n, n = 100..800; up to ~0.5 h in coupled cases); the pressure is first order
@@ -19,6 +21,7 @@
 
 mod dense;
 mod discretisation;
+pub mod history;
 mod smoothing_newton;
 mod stick_edge;
 

@@ -151,6 +151,159 @@ pub(crate) fn solve(lcp: &AffineLcp, z0: &[f64], ctl: Controls) -> Result<LcpRoo
     )))
 }
 
+/// An affine mixed complementarity problem with bounds that move with the unknowns: find
+/// z in R^n such that, for the first m rows (m <= n), with the gaps to the lower and upper
+/// bound g_l = gl0 + GL z >= 0, g_u = gu0 + GU z >= 0 and F = f0 + FM z,
+/// g_l = 0 => F >= 0, g_u = 0 => F <= 0, and F = 0 where both gaps are positive; the rows
+/// m..n are equalities F = 0 (free unknowns). (A box-constrained variational inequality: a
+/// friction force between -mu p and mu p against a slip increment.)
+pub(crate) struct BoxMcp<'a> {
+    pub gl0: Vec<f64>,
+    pub gl: &'a Mat<f64>,
+    pub gu0: Vec<f64>,
+    pub gu: &'a Mat<f64>,
+    pub f0: Vec<f64>,
+    pub f: &'a Mat<f64>,
+}
+
+/// The smoothed box function Phi = phi(g_l, -phi(g_u, -F)) (the nested Fischer-Burmeister
+/// form of Billups and of Chen-Harker-Kanzow-Smale for bounds), with its partial derivatives
+/// (d/dg_l, d/dg_u, d/dF, d/deps).
+fn box_phi(eps: f64, gl: f64, gu: f64, f: f64) -> (f64, [f64; 4]) {
+    let e2 = std::f64::consts::SQRT_2 * eps;
+    let rho_in = gu.hypot(f).hypot(e2);
+    let inner = gu - f - rho_in;
+    let y = -inner;
+    let rho = gl.hypot(y).hypot(e2);
+    let phi = gl + y - rho;
+    let (pa, pb, pe) = if rho > 0.0 {
+        (1.0 - gl / rho, 1.0 - y / rho, -2.0 * eps / rho)
+    } else {
+        let c = 1.0 - std::f64::consts::FRAC_1_SQRT_2;
+        (c, c, 0.0)
+    };
+    let (qa, qb, qe) = if rho_in > 0.0 {
+        (1.0 - gu / rho_in, 1.0 + f / rho_in, -2.0 * eps / rho_in)
+    } else {
+        let c = 1.0 - std::f64::consts::FRAC_1_SQRT_2;
+        (c, c, 0.0)
+    };
+    // inner = phi(g_u, -F): d inner = qa dg_u - qb dF + qe deps; y = -inner.
+    (phi, [pa, -pb * qa, pb * qb, pe - pb * qe])
+}
+
+/// Converged iterate of a [`BoxMcp`]: z, the gaps and F there, and the Newton count.
+pub(crate) struct BoxRoot {
+    pub z: Vec<f64>,
+    pub gl: Vec<f64>,
+    pub gu: Vec<f64>,
+    pub f: Vec<f64>,
+    pub iterations: usize,
+}
+
+/// Solves the [`BoxMcp`] from `z0` by the same smoothing Newton method as [`solve`]
+/// (Qi-Sun-Zhou on H(eps, z) = (eps, Phi_eps(z)), Armijo search on |H|^2); converged when
+/// max |Phi_0| <= `ctl.tol`.
+pub(crate) fn solve_box(mcp: &BoxMcp<'_>, z0: &[f64], ctl: Controls) -> Result<BoxRoot> {
+    let n = z0.len();
+    let m = mcp.gl0.len();
+    let eps_bar = ctl.eps0;
+    let mut eps = eps_bar;
+    let mut z = z0.to_vec();
+    let mut gl = affine(&mcp.gl0, mcp.gl, &z);
+    let mut gu = affine(&mcp.gu0, mcp.gu, &z);
+    let mut f = affine(&mcp.f0, mcp.f, &z);
+    let values = |eps: f64, gl: &[f64], gu: &[f64], f: &[f64]| -> Vec<f64> {
+        (0..n)
+            .map(|i| {
+                if i < m {
+                    box_phi(eps, gl[i], gu[i], f[i]).0
+                } else {
+                    f[i]
+                }
+            })
+            .collect()
+    };
+    let merit = |eps: f64, v: &[f64]| eps * eps + v.iter().map(|x| x * x).sum::<f64>();
+    let mut psi = merit(eps, &values(eps, &gl, &gu, &f));
+    for iteration in 0..=ctl.max_iter {
+        let residual = values(0.0, &gl, &gu, &f)
+            .iter()
+            .fold(0.0f64, |r, v| r.max(v.abs()));
+        if !residual.is_finite() {
+            return Err(Error::NoConvergence(
+                "non-finite complementarity residual".into(),
+            ));
+        }
+        if residual <= ctl.tol {
+            return Ok(BoxRoot {
+                z,
+                gl,
+                gu,
+                f,
+                iterations: iteration,
+            });
+        }
+        if iteration == ctl.max_iter {
+            break;
+        }
+        let beta = GAMMA * psi.min(1.0);
+        let d_eps = -eps + beta * eps_bar;
+        let mut rhs = vec![0.0; n];
+        let mut coef = vec![[0.0; 4]; m];
+        for i in 0..n {
+            if i < m {
+                let (phi, d) = box_phi(eps, gl[i], gu[i], f[i]);
+                coef[i] = d;
+                rhs[i] = -phi - d[3] * d_eps;
+            } else {
+                rhs[i] = -f[i];
+            }
+        }
+        let jac = Mat::from_fn(n, n, |i, j| {
+            if i < m {
+                let d = coef[i];
+                d[0] * mcp.gl[(i, j)] + d[1] * mcp.gu[(i, j)] + d[2] * mcp.f[(i, j)]
+            } else {
+                mcp.f[(i, j)]
+            }
+        });
+        let dz = Lu::new(jac)?.solve_vec(&rhs)?;
+        let dgl = affine(&vec![0.0; m], mcp.gl, &dz);
+        let dgu = affine(&vec![0.0; m], mcp.gu, &dz);
+        let df = affine(&vec![0.0; n], mcp.f, &dz);
+        let mut lambda = 1.0;
+        let mut accepted = false;
+        for _ in 0..MAX_HALVINGS {
+            let step = |v: &[f64], d: &[f64]| -> Vec<f64> {
+                v.iter().zip(d).map(|(x, d)| x + lambda * d).collect()
+            };
+            let eps_t = eps + lambda * d_eps;
+            let (gl_t, gu_t, f_t) = (step(&gl, &dgl), step(&gu, &dgu), step(&f, &df));
+            let psi_t = merit(eps_t, &values(eps_t, &gl_t, &gu_t, &f_t));
+            if psi_t <= (1.0 - 2.0 * SIGMA * (1.0 - GAMMA * eps_bar) * lambda) * psi {
+                for (zi, d) in z.iter_mut().zip(&dz) {
+                    *zi += lambda * d;
+                }
+                (eps, gl, gu, f, psi) = (eps_t, gl_t, gu_t, f_t, psi_t);
+                accepted = true;
+                break;
+            }
+            lambda *= 0.5;
+        }
+        if !accepted {
+            return Err(Error::NoConvergence(format!(
+                "smoothing Newton (box) line search failed at iteration {iteration} \
+                 (|H|^2 = {psi:.3e})"
+            )));
+        }
+    }
+    Err(Error::NoConvergence(format!(
+        "smoothing Newton (box) did not converge in {} iterations (|H|^2 = {psi:.3e})",
+        ctl.max_iter
+    )))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -184,5 +337,35 @@ mod tests {
             assert!((root.a[i] - w_true[i]).abs() < 1e-12);
         }
         assert!(root.iterations > 0 && root.iterations < 30);
+    }
+    #[test]
+    fn solves_a_small_box_problem_with_moving_bounds_and_a_free_row() {
+        // z = (x0, x1, t): bounds -1 - 0.1 x1 <= x0 <= 1 + 0.1 x1 and -2 <= x1 <= 2 with
+        // F0 = x0 - t - 3, F1 = x1 - 0.5; free row t = 0.25. Solution: x1 = 0.5 inside;
+        // x0 at its upper bound 1.05 with F0 = 1.05 - 0.25 - 3 < 0.
+        let gl = Mat::from_fn(2, 3, |i, j| [[1.0, 0.1, 0.0], [0.0, 1.0, 0.0]][i][j]);
+        let gu = Mat::from_fn(2, 3, |i, j| [[-1.0, 0.1, 0.0], [0.0, -1.0, 0.0]][i][j]);
+        let f = Mat::from_fn(3, 3, |i, j| {
+            [[1.0, 0.0, -1.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]][i][j]
+        });
+        let mcp = BoxMcp {
+            gl0: vec![1.0, 2.0],
+            gl: &gl,
+            gu0: vec![1.0, 2.0],
+            gu: &gu,
+            f0: vec![-3.0, -0.5, -0.25],
+            f: &f,
+        };
+        let ctl = Controls {
+            eps0: 1.0,
+            tol: 1e-13,
+            max_iter: 50,
+        };
+        let root = solve_box(&mcp, &[0.0; 3], ctl).unwrap();
+        let want = [1.05, 0.5, 0.25];
+        for (z, w) in root.z.iter().zip(want) {
+            assert!((z - w).abs() < 1e-12, "{:?}", root.z);
+        }
+        assert!(root.gu[0].abs() < 1e-12 && root.f[0] < 0.0);
     }
 }

@@ -10,7 +10,7 @@ use crate::goodman::c_by_bisection;
 const STEEL: f64 = 0.4 / 1.4;
 
 /// Carbon/epoxy ply, plane stress (docs/theory.md (M3)): (bp, bq).
-fn carbon_epoxy() -> (f64, f64) {
+pub(super) fn carbon_epoxy() -> (f64, f64) {
     let (e11, e22, g12, nu12): (f64, f64, f64, f64) = (181.0, 10.3, 7.17, 0.28);
     let e = (e11 * e22).sqrt();
     let nu = (nu12 * nu12 * e22 / e11).sqrt();
