@@ -782,7 +782,9 @@ pub fn solve(k: &Coupling, tol: f64) -> Result<CoupledSolution> {
     if let Some(s) = limit_regime(k, tol, tol) {
         return Ok(s);
     }
-    if let Some(s) = spectral_from_table(k, tol, f64::INFINITY) {
+    // the tractions as accurate as the panels' stopping rule makes them
+    let traction_tol = (TRACTION_RATIO * tol).max(TRACTION_FLOOR);
+    if let Some(s) = spectral_from_table(k, tol, traction_tol) {
         return Ok(s);
     }
     let s = panel_regimes(k, tol, f64::INFINITY)?;
