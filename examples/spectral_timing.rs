@@ -1,5 +1,5 @@
-//! COUPLED's spectral solver (global bases per zone, docs/theory_spectral.md) against the
-//! panels alone, on the 12 scenes of examples/speed_accuracy.rs, in one run: per scene the
+//! COUPLED's spectral solver (global bases per zone, docs/theory_spectral.md; not yet
+//! COUPLED's default) against COUPLED as it is (the panels), on the 12 scenes of examples/speed_accuracy.rs, in one run: per scene the
 //! regime that answered, the unknowns, the time per solve (median of repeated solves, wall
 //! time) and the distance between the two answers' c and tractions; then the medians and
 //! their ratio. Writes docs/spectral_timing.md.
@@ -7,7 +7,7 @@
 //! `cargo run --release --example spectral_timing`
 use std::time::{Duration, Instant};
 
-use orthoslip::coupled::{CoupledSolution, solve_panels_to, solve_to};
+use orthoslip::coupled::{CoupledSolution, solve_spectral_to, solve_to};
 use orthoslip::problem::{Profile, traction_distance};
 use orthoslip::{Material, Result};
 
@@ -70,8 +70,8 @@ fn main() {
         for (name, m) in materials() {
             for mu in [0.1, 0.3, 1.0] {
                 let k = m.coupling(mu);
-                let (a, sa) = time(|| solve_to(&k, tol, ttol));
-                let (b, sb) = time(|| solve_panels_to(&k, tol, ttol));
+                let (a, sa) = time(|| solve_spectral_to(&k, tol, ttol));
+                let (b, sb) = time(|| solve_to(&k, tol, ttol));
                 let (a, b) = (a.as_secs_f64(), b.as_secs_f64());
                 let row = match (&sa, &sb) {
                     (Ok(s), Ok(p)) => {

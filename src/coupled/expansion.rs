@@ -9,8 +9,11 @@
 
 use super::mesh::{self, Pt};
 use super::{CoupledSolution, Discrete, Regime};
-use crate::field::{Expand, Expansion, Exponents, Family, Panel, fit, graded_plain, sample};
+use crate::field::{
+    Expand, Expansion, Exponents, Family, Panel, fit, fitted_panel, graded, graded_plain, sample,
+};
 use crate::numerics::cauchy::Weight;
+use crate::spectral::Spectral;
 
 /// A panel at c whose basis holds a log weight, as plain panels graded towards c
 /// ([`graded_plain`]): the field takes Jacobi weights, and the log weight split into its
@@ -116,14 +119,112 @@ fn from_discrete(d: &Discrete, delta: f64) -> Expansion {
     Expansion { panels }
 }
 
+/// The spectral solution as panels of the field's families, exact in form: the panels touching
+/// c carry its split q = q_plain + (c - x)^g q_edge (stick side) and p = p_plain +
+/// (x - c)^g p_edge (slip side) as a plain family plus one weighted at c, each smooth there
+/// (`Fixed::stick_split`, `Fixed::slip_split`); the panels graded away from c on both sides
+/// are plain (the (c -+ x)^g at least their width away); the last, [(1 + c)/2, 1], carries
+/// (1 - t)^(-g). The panels at c are min(c, 1 - c) / 2 wide: the bases' poles lie at
+/// least (1 - c) / 10 and c / 10 beyond the zones, so the fits' cofactors are analytic over
+/// twice the panels' width at least. q = delta q~, and q~ = mu~ p on the slip zone.
+fn from_spectral(s: &Spectral, delta: f64) -> Expansion {
+    let f = &s.fixed;
+    let (c, w) = (s.edge.c, s.edge.one_minus_c);
+    let (g, mu) = (f.basis.k.g, f.basis.k.mu);
+    let near = 0.5 * c.min(w);
+    let h = 0.5 * near;
+    let plain = |a: f64, b: f64| {
+        let (m, hw) = (0.5 * (a + b), 0.5 * (b - a));
+        let at = |t: f64| f.at(m + hw * t);
+        let p = fit(|t| at(t).0);
+        let q = if a >= c {
+            p.iter().map(|v| delta * mu * v).collect()
+        } else {
+            fit(|t| delta * at(t).1)
+        };
+        Panel {
+            a,
+            b,
+            families: vec![Family {
+                weight: Weight::One,
+                p,
+                q,
+            }],
+        }
+    };
+    let mut panels = Vec::new();
+    // stick side: [0, c - d_last], ..., [c - d_1, c - d_0], then the split panel at c
+    let stick: Vec<f64> = graded(near, c);
+    let mut left = 0.0;
+    for &d in stick.iter().rev() {
+        if c - d > left {
+            panels.push(plain(left, c - d));
+            left = c - d;
+        }
+    }
+    // c - x = h (1 - t) on [c - near, c]
+    let split = |t: f64| f.stick_split(c - h * (1.0 - t));
+    let scale = h.powf(g);
+    panels.push(Panel {
+        a: left,
+        b: c,
+        families: vec![
+            Family {
+                weight: Weight::One,
+                p: fit(|t| split(t).0),
+                q: fit(|t| delta * split(t).1),
+            },
+            Family {
+                weight: Weight::Right(g),
+                p: vec![0.0],
+                q: fit(|t| delta * scale * split(t).2),
+            },
+        ],
+    });
+    // slip side: x - c = h (1 + t) on [c, c + near]
+    let split = |t: f64| f.slip_split(c + h * (1.0 + t));
+    let p_plain = fit(|t| split(t).0);
+    let p_edge = fit(|t| scale * split(t).1);
+    let times = |v: &[f64]| v.iter().map(|x| delta * mu * x).collect();
+    panels.push(Panel {
+        a: c,
+        b: c + near,
+        families: vec![
+            Family {
+                weight: Weight::One,
+                q: times(&p_plain),
+                p: p_plain,
+            },
+            Family {
+                weight: Weight::Left(g),
+                q: times(&p_edge),
+                p: p_edge,
+            },
+        ],
+    });
+    let end = c + 0.5 * w;
+    let mut right = c + near;
+    for &d in graded(near, 0.5 * w).iter().skip(1) {
+        if c + d < end && c + d > right {
+            panels.push(plain(right, c + d));
+            right = c + d;
+        }
+    }
+    if end > right {
+        panels.push(plain(right, end));
+    }
+    panels.push(fitted_panel(end, 1.0, Weight::Right(-g), |omt, _| {
+        let (p, _) = f.at(1.0 - 0.25 * w * omt);
+        (p, delta * mu * p)
+    }));
+    Expansion { panels }
+}
+
 impl Expand for CoupledSolution {
     fn expansion(&self) -> Expansion {
         match &self.regime {
             Regime::Panels(d) => from_discrete(d, self.delta),
-            Regime::Spectral(_) => {
-                let g = self.coupling.reduced().0.edge_exponent();
-                sample(self, Exponents { edge: g, stick: g })
-            }
+            Regime::Spectral(s) => from_spectral(s, self.delta),
             Regime::Uncoupled(g) | Regime::Tabulated(g) => g.expansion(),
             Regime::FullSlip(f) => f.expansion(),
             Regime::NearBonded(b) => b.expansion(),

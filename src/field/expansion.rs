@@ -122,7 +122,7 @@ const TAIL: f64 = 1e-15;
 /// Distances from a singular point of the break points of panels graded towards it, up to
 /// `limit` (exclusive): h, 2h, 4h, ..., each panel at least its own width from the singular
 /// point; the panel left over, [last, limit], is at most twice as wide as its distance.
-fn graded(h: f64, limit: f64) -> Vec<f64> {
+pub(crate) fn graded(h: f64, limit: f64) -> Vec<f64> {
     let mut d = vec![h];
     while let Some(&last) = d.last() {
         if limit <= 3.0 * last {

@@ -42,7 +42,7 @@ mod kernel;
 mod slip;
 
 pub(crate) use expansion::{
-    Expand, Expansion, Exponents, Family, Panel, fit, fitted_panel, graded_plain, sample,
+    Expand, Expansion, Exponents, Family, Panel, fit, fitted_panel, graded, graded_plain, sample,
 };
 
 use crate::material::Effective;

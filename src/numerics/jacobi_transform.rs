@@ -172,9 +172,20 @@ impl JacobiFamily {
         power(p.omy, self.a) * power(p.opy, self.b)
     }
 
+    /// The weight's factors (1 - y)^a and (1 + y)^b.
+    pub(crate) fn weight_factors(&self, p: Point) -> (f64, f64) {
+        (power(p.omy, self.a), power(p.opy, self.b))
+    }
+
     /// w(y) p_k(y), k < n, for y in (-1, 1).
+    #[cfg(test)]
     pub(crate) fn values(&self, p: Point, out: &mut [f64]) {
-        let w = self.weight(p);
+        self.values_weighted(p, self.weight(p), out);
+    }
+
+    /// w p_k(y), k < n, for y in [-1, 1] with the weight's value `w` given (e.g. one end's
+    /// factor left out, to split off the singular factor there).
+    pub(crate) fn values_weighted(&self, p: Point, w: f64, out: &mut [f64]) {
         let r = &self.rec;
         let (mut prev, mut cur) = (0.0, 1.0);
         for (k, o) in out.iter_mut().take(self.n).enumerate() {

@@ -58,12 +58,16 @@ impl Block {
 
     /// The columns' values at y in (-1, 1) into out[..len].
     pub(crate) fn values(&self, y: Point, buf: &mut [f64], out: &mut [f64]) {
+        self.values_weighted(y, self.family.weight(y), buf, out);
+    }
+
+    /// The columns' values at y with the weight's value `w` given in place of w(y).
+    pub(crate) fn values_weighted(&self, y: Point, w: f64, buf: &mut [f64], out: &mut [f64]) {
         let n = self.family.len();
-        self.family.values(y, &mut buf[..n]);
+        self.family.values_weighted(y, w, &mut buf[..n]);
         for (o, &k) in out.iter_mut().zip(&self.degrees) {
             *o = buf[k];
         }
-        let w = self.family.weight(y);
         let m = self.degrees.len();
         for (o, (z, _, _)) in out[m..].iter_mut().zip(&self.poles) {
             *o = w * self.pole(z.y, y.y);
@@ -115,6 +119,11 @@ impl Block {
                     0.0
                 };
         }
+    }
+
+    /// The family's weight factors (1 - y)^a and (1 + y)^b at y.
+    pub(crate) fn weight_factors(&self, y: Point) -> (f64, f64) {
+        self.family.weight_factors(y)
     }
 
     /// Length of the scratch buffer the evaluations need.

@@ -5,7 +5,8 @@
 //!
 //! - (E1) H[p](x) - b q(x) = 0 at every point, 0 <= x < 1;
 //! - (E2) H[q](x) + b p(x) = sigma at the stick points;
-//! - int p = 1, by elimination of the column whose integral weighs most;
+//! - int p = 1, and p and q continuous at x = c, by elimination of one column each
+//!   (Gauss-Jordan on the three constraints, pivoting on the largest entry);
 //!
 //! with q = mu p on the slip zone built into the slip columns. The exact c is where
 //! sigma(c) = 0 (the bounded shear traction at x = c). Rows are weighted by (1 - x)^g (the
@@ -329,28 +330,74 @@ pub(crate) fn solve_fixed(k: Constants, c: f64, w: f64, sizes: Sizes) -> Result<
             a[i * cols + j] *= scale[j];
         }
     }
-    // int p = 1: eliminate the column whose scaled integral is largest
-    let integral: Vec<f64> = basis
-        .integrals()
-        .iter()
-        .zip(&scale)
-        .map(|(i, s)| i * s)
-        .collect();
-    let j0 = (0..n)
-        .max_by(|&i, &j| integral[i].abs().total_cmp(&integral[j].abs()))
-        .unwrap_or(0);
-    let i0 = integral[j0];
-    let keep: Vec<usize> = (0..cols).filter(|&j| j != j0).collect();
+    // the constraints, in the scaled columns: int p = 1 (S3), and p and q continuous at
+    // x = c (C2)
+    let (mut ps, mut qs, mut pc, mut qc) = (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+    let at_c = |xmc| Pt { x: c, omx: w, xmc };
+    basis.tractions_row(&at_c(-f64::MIN_POSITIVE), &mut ps, &mut qs);
+    basis.tractions_row(&at_c(0.0), &mut pc, &mut qc);
+    let integral = basis.integrals();
+    let mut cons: Vec<(Vec<f64>, f64)> = [
+        (integral, 1.0),
+        ((0..n).map(|j| ps[j] - pc[j]).collect(), 0.0),
+        ((0..n).map(|j| qs[j] - qc[j]).collect(), 0.0),
+    ]
+    .into_iter()
+    .map(|(row, d)| {
+        let mut row: Vec<f64> = row.iter().zip(&scale).map(|(v, s)| v * s).collect();
+        row.push(0.0);
+        (row, d)
+    })
+    .collect();
+    // Gauss-Jordan on the constraints, each pivot the largest entry left in its row
+    let mut pivots = Vec::new();
+    for i in 0..cons.len() {
+        let (row, _) = &cons[i];
+        let j = (0..n)
+            .filter(|j| !pivots.contains(j))
+            .max_by(|&a, &b| row[a].abs().total_cmp(&row[b].abs()))
+            .unwrap_or(0);
+        let piv = cons[i].0[j];
+        if piv == 0.0 {
+            return Err(Error::NoConvergence(format!(
+                "spectral: dependent constraints at c = {c}"
+            )));
+        }
+        for v in &mut cons[i].0 {
+            *v /= piv;
+        }
+        cons[i].1 /= piv;
+        let (row, d) = cons[i].clone();
+        for (k2, (other, od)) in cons.iter_mut().enumerate() {
+            if k2 != i {
+                let f = other[j];
+                for (o, r) in other.iter_mut().zip(&row) {
+                    *o -= f * r;
+                }
+                *od -= f * d;
+            }
+        }
+        pivots.push(j);
+    }
+    let keep: Vec<usize> = (0..cols).filter(|j| !pivots.contains(j)).collect();
     let m = keep.len();
     let mut reduced = vec![0.0; rows * m];
     let mut rhs = vec![0.0; rows];
     for i in 0..rows {
-        let a0 = a[i * cols + j0];
-        rhs[i] = -a0 / i0;
+        let row = &a[i * cols..(i + 1) * cols];
         for (jj, &j) in keep.iter().enumerate() {
-            let ij = if j < n { integral[j] } else { 0.0 };
-            reduced[i * m + jj] = a[i * cols + j] - a0 * ij / i0;
+            reduced[i * m + jj] = row[j]
+                - pivots
+                    .iter()
+                    .zip(&cons)
+                    .map(|(&pj, (k, _))| row[pj] * k[j])
+                    .sum::<f64>();
         }
+        rhs[i] = -pivots
+            .iter()
+            .zip(&cons)
+            .map(|(&pj, (_, d))| row[pj] * d)
+            .sum::<f64>();
     }
     // the frame is ill-conditioned (near-dependent columns by design: cond 1e15 and more);
     // Householder QR without pivoting spreads their rounding over every coefficient (the
@@ -362,14 +409,12 @@ pub(crate) fn solve_fixed(k: Constants, c: f64, w: f64, sizes: Sizes) -> Result<
         )));
     }
     let mut full = vec![0.0; cols];
-    let mut sum = 0.0;
     for (jj, &j) in keep.iter().enumerate() {
         full[j] = x[jj];
-        if j < n {
-            sum += integral[j] * x[jj];
-        }
     }
-    full[j0] = (1.0 - sum) / i0;
+    for (&pj, (k, d)) in pivots.iter().zip(&cons) {
+        full[pj] = d - keep.iter().map(|&j| k[j] * full[j]).sum::<f64>();
+    }
     let coef: Vec<f64> = (0..n).map(|j| full[j] * scale[j]).collect();
     let sigma = full[n] * scale[n];
     Ok(Fixed { basis, coef, sigma })
@@ -420,6 +465,63 @@ impl Fixed {
     pub(crate) fn integral_of_p(&self) -> f64 {
         let i = self.basis.integrals();
         i.iter().zip(&self.coef).map(|(a, b)| a * b).sum()
+    }
+
+    /// At a stick point 0 <= x < c: (p, q_plain, q_edge) with q = q_plain + (c - x)^g q_edge,
+    /// the three smooth up to x = c ((E1)'s local exponents at c on the stick side).
+    pub(crate) fn stick_split(&self, x: f64) -> (f64, f64, f64) {
+        let b = &self.basis;
+        let (c, g) = (b.c, b.k.g);
+        let t = Point::offsets((c - x) / c, (c + x) / c);
+        let mut buf = vec![0.0; b.scratch];
+        let mut dot = |block: &Block, w: Option<f64>, at: usize| {
+            let n = block.len();
+            let mut v = vec![0.0; n];
+            match w {
+                Some(w) => block.values_weighted(t, w, &mut buf, &mut v),
+                None => block.values(t, &mut buf, &mut v),
+            }
+            v.iter()
+                .zip(&self.coef[at..at + n])
+                .map(|(a, b)| a * b)
+                .sum::<f64>()
+        };
+        let (q0, _) = b.starts();
+        let n1 = b.stick[1].len();
+        let p = dot(&b.stick[0], None, 0);
+        let q_plain = dot(&b.stick[1], None, q0);
+        // (1 - tau^2)^g = (c - x)^g (1 + tau)^g / c^g
+        let (_, opt) = b.stick[2].weight_factors(t);
+        let q_edge = dot(&b.stick[2], Some(opt / c.powf(g)), q0 + n1);
+        (p, q_plain, q_edge)
+    }
+
+    /// At a slip point c < x < 1: (p_plain, p_edge) with p = p_plain + (x - c)^g p_edge
+    /// (q = mu p there), both smooth down to x = c.
+    pub(crate) fn slip_split(&self, x: f64) -> (f64, f64) {
+        let b = &self.basis;
+        let (c, w, g) = (b.c, b.w, b.k.g);
+        let s = Point::offsets(2.0 * (1.0 - x) / w, 2.0 * (x - c) / w);
+        let mut buf = vec![0.0; b.scratch];
+        let (_, s0) = b.starts();
+        let n0 = b.slip[0].len();
+        let mut v = vec![0.0; n0.max(b.slip[1].len())];
+        b.slip[0].values(s, &mut buf, &mut v[..n0]);
+        let plain: f64 = v[..n0]
+            .iter()
+            .zip(&self.coef[s0..])
+            .map(|(a, b)| a * b)
+            .sum();
+        // (1 - s)^-g (1 + s)^g = (1 - s)^-g (2 (x - c) / w)^g
+        let (oms, _) = b.slip[1].weight_factors(s);
+        let n1 = b.slip[1].len();
+        b.slip[1].values_weighted(s, oms * (2.0 / w).powf(g), &mut buf, &mut v[..n1]);
+        let edge: f64 = v[..n1]
+            .iter()
+            .zip(&self.coef[s0 + n0..])
+            .map(|(a, b)| a * b)
+            .sum();
+        (plain, edge)
     }
 
     /// Number of unknowns (coefficients and sigma).
