@@ -146,9 +146,19 @@ impl Profile for NearBonded {
 impl Expand for NearBonded {
     fn expansion(&self) -> Expansion {
         // the tractions at u = 1 - x = (1 - b) + h (1 - t) on the panel [a, b]
+        // the slip layer where it is wider than the last panel (loose tolerances), else the
+        // bonded field to the edge, the layer being below the panels' resolution
+        let layer = self.ln_w.exp() >= EDGE_PANEL;
+        let at = |u: f64| {
+            if layer {
+                self.with_layer(u)
+            } else {
+                self.at(u)
+            }
+        };
         let panel = |a: f64, b: f64, weight: Weight| {
             let h = 0.5 * (b - a);
-            fitted_panel(a, b, weight, |omt, _| self.with_layer((1.0 - b) + h * omt))
+            fitted_panel(a, b, weight, |omt, _| at((1.0 - b) + h * omt))
         };
         let mut panels = Vec::new();
         let (mut a, mut u) = (0.0, 0.5);
@@ -156,9 +166,8 @@ impl Expand for NearBonded {
             panels.push(panel(a, 1.0 - u, Weight::One));
             (a, u) = (1.0 - u, 0.25 * u);
         }
-        // the edge exponent of the slip layer where it is wider than the last panel, else
-        // the bonded field's 1/2
-        let edge = if self.ln_w.exp() >= EDGE_PANEL {
+        // the edge exponent of the slip layer, or the bonded field's 1/2
+        let edge = if layer {
             self.coupling.edge_exponent()
         } else {
             0.5
