@@ -5,7 +5,7 @@
 #include <exception>
 #include <vector>
 
-#include "orthoslip.hpp"
+#include <orthoslip.hpp>  // installed next to orthoslip.h
 
 namespace {
 const char *method_name(orthoslip_method m) {

@@ -257,7 +257,9 @@ orthoslip_status orthoslip_contact_set_traction_tolerance(orthoslip_contact *k, 
  *
  * On success `*out` owns a new handle, to be released with `orthoslip_material_free`.
  * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER (`out` NULL),
- * ORTHOSLIP_ERROR_INVALID_ARGUMENT (non-finite value, non-positive modulus),
+ * ORTHOSLIP_ERROR_INVALID_ARGUMENT (non-finite value, non-positive modulus, or moduli so
+ * close to the ends of the double range that the compliances of
+ * `orthoslip_material_green` would overflow or underflow: only their ratios matter),
  * ORTHOSLIP_ERROR_INADMISSIBLE_MATERIAL (compliance not positive definite) or
  * ORTHOSLIP_ERROR_INTERNAL. On failure `*out` is set to NULL.
  *

@@ -159,14 +159,27 @@ impl Material {
                 -nu
             )));
         }
-        Ok(Self {
+        let m = Self {
             k: Effective {
                 e,
                 nu,
                 delta,
                 kappa,
             },
-        })
+        };
+        // moduli next to the ends of the double range (subnormal E: A = (1 - nu) / E
+        // overflows; E ~ 1e308: A underflows to 0): the compliances the material reports
+        // and the field uses must be representable
+        let g = m.green();
+        if ![g.a, g.b, g.c].iter().all(|v| v.is_finite() && *v > 0.0) {
+            return Err(Error::InvalidArgument(format!(
+                "the compliances A = {}, B = {}, C = {} (1 / stress unit) of E = {e}, nu = \
+                 {nu}, delta = {delta}, kappa = {kappa} leave the range of doubles; only the \
+                 ratios of the moduli matter: give them in another unit",
+                g.a, g.b, g.c
+            )));
+        }
+        Ok(m)
     }
 
     /// From in-plane compliances: E = 1/sqrt(s11 s22), nu = -E s12, delta^4 = s22/s11,

@@ -123,13 +123,25 @@ fn extrapolated_large_friction_is_admissible() {
 /// `coupled/auxetic.rs`; s = 1 - b* = 1e-6 and 1e-8, tolerance 1e-6, which the conditioning
 /// there still allows): every OK answer is admissible too, and c grows with mu.
 #[test]
+#[ignore = "slow tier: eight COUPLED solves next to b* = 1"]
 fn auxetic_answers_are_admissible() {
+    auxetic_answers_are_admissible_at(&[1e-6, 1e-8], &[0.3, 3.0, 30.0, 1e3], 6);
+}
+
+/// The fast tier's share of [`auxetic_answers_are_admissible`]: s = 1e-6 at two frictions.
+#[test]
+fn auxetic_answers_are_admissible_at_two_frictions() {
+    auxetic_answers_are_admissible_at(&[1e-6], &[0.3, 30.0], 2);
+}
+
+/// COUPLED's answers at b* = 1 - s for each of `s` and `frictions`, at least `min_answers`.
+fn auxetic_answers_are_admissible_at(s_values: &[f64], frictions: &[f64], min_answers: usize) {
     let mut bad = Vec::new();
     let mut answered = 0;
-    for s in [1e-6, 1e-8] {
+    for &s in s_values {
         let m = Material::effective(1.0, -1.0 + 2.0 * s, 1.0, 1.0).unwrap();
         let mut last = 0.0;
-        for mu in [0.3, 3.0, 30.0, 1e3] {
+        for &mu in frictions {
             let mut contact = Contact::new(m);
             contact.set_friction(mu).unwrap();
             contact.set_method(Method::Coupled);
@@ -150,6 +162,6 @@ fn auxetic_answers_are_admissible() {
         }
     }
     println!("{answered} COUPLED answers checked near b* = 1");
-    assert!(answered >= 6, "only {answered} answers");
+    assert!(answered >= min_answers, "only {answered} answers");
     assert!(bad.is_empty(), "{}", bad.join("\n"));
 }

@@ -241,3 +241,46 @@ fn field_errors() {
 fn traction_tolerance() {
     check_program("traction_tolerance");
 }
+
+/// Runs the hostile-input program (tests/c/hostile.c) with `draws` draws from `seed`; `full`
+/// also draws tolerances next to 0 for COUPLED, LCP and AUTO. Prints its counts.
+fn run_hostile(exe: &Path, draws: usize, seed: u64, full: bool) {
+    let start = Instant::now();
+    let mut cmd = Command::new(exe);
+    cmd.env("ORTHOSLIP_HOSTILE_DRAWS", draws.to_string())
+        .env("ORTHOSLIP_HOSTILE_SEED", seed.to_string());
+    if full {
+        cmd.env("ORTHOSLIP_HOSTILE_FULL", "1");
+    }
+    let out = run(cmd, &format!("hostile ({draws} draws, seed {seed})"));
+    print!("{}", String::from_utf8_lossy(&out.stdout));
+    println!("hostile: ran in {:.2?}", start.elapsed());
+}
+
+/// Hostile input through the C ABI (issue 26): random materials, frictions, tolerances,
+/// methods (also invalid values) and evaluation points with NaN, infinities, zeros, negative,
+/// subnormal and huge values: every call ends OK with finite admissible answers, or with a
+/// status and a message. 300 draws (COUPLED, LCP and AUTO at tolerances from 1e-6 up, every
+/// invalid tolerance and those next to 1), the C++ build on 10, valgrind on 12 cheap ones
+/// (ORTHOSLIP_TEST_QUICK); the slow tier draws 1000 at every tolerance
+/// ([`hostile_wide`]).
+#[test]
+fn hostile() {
+    let c = build("hostile", Lang::C);
+    run_hostile(&c, 300, 26, false);
+    memcheck(&c, "hostile");
+    let cxx = build("hostile", Lang::Cxx);
+    run_hostile(&cxx, 10, 27, false);
+    for exe in [c, cxx] {
+        std::fs::remove_file(exe).ok();
+    }
+}
+
+/// The slow tier's hostile input: 1000 draws with tolerances next to 0 for every method.
+#[test]
+#[ignore = "slow tier: 1000 hostile draws, tolerances down to the smallest subnormal for every method"]
+fn hostile_wide() {
+    let c = build("hostile", Lang::C);
+    run_hostile(&c, 1000, 2026, true);
+    std::fs::remove_file(c).ok();
+}

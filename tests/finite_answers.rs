@@ -133,3 +133,81 @@ fn extreme_materials() {
     }
     sweep(scenes);
 }
+
+/// What the hostile-input test (tests/c/hostile.c, issue 26) found, each at its root:
+/// - friction next to 0 (down to the smallest subnormal, 4.9e-324): COUPLED and AUTO take the
+///   full-slip limit, whose stick-zone pressure p_fs(c) = c^(2g - 1) / ... had ln c = -inf
+///   times 2g - 1 = 0 (NaN at x = 0); the product is now formed as one, and tends to
+///   1 / (pi (1 - b*^2));
+/// - large friction (the extrapolation in 1/mu~) exactly at x = c: p < 0 and q ~ -mu;
+/// - stresses at depths beyond ~1e154 (|z|^2 overflows) and at -DBL_MAX: NaN;
+/// - the slip within a subnormal distance of c = 0: NaN;
+/// - moduli whose compliances overflow (subnormal E): accepted with A = +inf.
+#[test]
+fn hostile_extremes() {
+    let steel = Material::effective(1.0, 0.3, 1.0, 1.0).unwrap();
+    let b = steel.b_star();
+    for mu in [f64::from_bits(1), 1e-310, 1e-300, 1e-100, 1e-20] {
+        for method in [
+            Method::Coupled,
+            Method::Auto,
+            Method::Goodman,
+            Method::Spence,
+        ] {
+            let mut k = Contact::new(steel);
+            k.set_friction(mu).unwrap();
+            k.set_method(method);
+            let s = k.solve().unwrap();
+            let (p, q) = s.tractions(0.0);
+            assert!(
+                p.is_finite() && p > 0.0 && q == 0.0,
+                "{method:?} mu = {mu:e}: p(0) = {p}"
+            );
+            if method == Method::Coupled {
+                let limit = 1.0 / (std::f64::consts::PI * (1.0 - b * b));
+                assert!(
+                    (p / limit - 1.0).abs() < 1e-12,
+                    "mu = {mu:e}: p(0) = {p}, {limit}"
+                );
+            }
+            for x in [f64::from_bits(1), 1e-300, 0.5] {
+                let u = s.slip(x).unwrap();
+                assert!(!u.is_nan(), "{method:?} mu = {mu:e}: slip({x:e}) = {u}");
+            }
+        }
+    }
+    // the extrapolation in 1/mu~ at its own stick edge, and the next doubles
+    let m =
+        Material::effective(1.0, -0.581_344_605_779_446_2, 1.0, 0.581_345_057_387_163_7).unwrap();
+    for mu in [1e7, 1e300] {
+        let mut k = Contact::new(m);
+        k.set_friction(mu).unwrap();
+        k.set_method(Method::Coupled);
+        let s = k.solve().unwrap();
+        let c = s.c();
+        for x in [c.next_down(), c, c.next_up(), c + 1e-15] {
+            let (p, q) = s.tractions(x);
+            assert!(
+                p >= 0.0 && (0.0..100.0).contains(&q),
+                "mu = {mu:e}, x - c = {:e}: ({p}, {q})",
+                x - c
+            );
+        }
+        for y in [-1e160, -f64::MAX] {
+            for x in [0.0, c, 1.0, 3.0] {
+                let st = s.stresses(x, y).unwrap();
+                assert!(
+                    st.iter().all(|v| v.is_finite()),
+                    "stresses at ({x}, {y:e}): {st:?}"
+                );
+            }
+        }
+    }
+    // compliances beyond the double range are refused, not reported as infinite
+    for e in [f64::from_bits(1), 1e-310] {
+        assert!(matches!(
+            Material::effective(e, 0.3, 1.0, 1.0),
+            Err(orthoslip::Error::InvalidArgument(_))
+        ));
+    }
+}

@@ -8,7 +8,9 @@
 //! route is checked by tests/python.rs.)
 //!
 //! Needs cmake, C, C++ and Fortran compilers, pkg-config, bash and binutils. A missing tool
-//! fails the test with what to install, unless ORTHOSLIP_SKIP_PACKAGING=1.
+//! fails the test with what to install, unless ORTHOSLIP_SKIP_PACKAGING=1. The C++ and Fortran
+//! consumers are built from a copy of `c_examples/` without its `orthoslip.hpp` and
+//! `orthoslip_mod.f90`: they take the installed ones (include/ and share/orthoslip/fortran/).
 
 mod readme;
 mod shell;
@@ -158,7 +160,17 @@ fn fresh_dir(dir: &Path) {
     }
 }
 
-/// Configures and builds c_examples against `prefix`; returns the build directory.
+/// The consumer programs of c_examples and its CMakeLists.txt, copied into `work` without the
+/// C++ wrapper and the Fortran module beside them, so that the build can only use the
+/// installed ones.
+const CONSUMER_FILES: [&str; 4] = [
+    "CMakeLists.txt",
+    "default_scene.c",
+    "default_scene.cpp",
+    "default_scene.f90",
+];
+
+/// Configures and builds (a copy of) c_examples against `prefix`; returns the build directory.
 fn build_examples(source: &Path, work: &Path, prefix: &Path, static_link: bool) -> PathBuf {
     let build = work.join(if static_link {
         "examples-static"
@@ -166,9 +178,16 @@ fn build_examples(source: &Path, work: &Path, prefix: &Path, static_link: bool) 
         "examples-shared"
     });
     fresh_dir(&build);
+    let consumer = work.join("examples-source");
+    fresh_dir(&consumer);
+    std::fs::create_dir_all(&consumer).unwrap();
+    for file in CONSUMER_FILES {
+        std::fs::copy(source.join("c_examples").join(file), consumer.join(file))
+            .unwrap_or_else(|e| panic!("copy c_examples/{file}: {e}"));
+    }
     let configure = run(command("cmake")
         .arg("-S")
-        .arg(source.join("c_examples"))
+        .arg(&consumer)
         .arg("-B")
         .arg(&build)
         .arg(format!("-DCMAKE_PREFIX_PATH={}", prefix.display()))
@@ -184,6 +203,20 @@ fn build_examples(source: &Path, work: &Path, prefix: &Path, static_link: bool) 
         configure.contains(&found),
         "configure did not report `{found}`"
     );
+    // the wrappers come from the package
+    for (what, path) in [
+        ("C++ wrapper", prefix.join("include/orthoslip.hpp")),
+        (
+            "Fortran module source",
+            prefix.join("share/orthoslip/fortran/orthoslip_mod.f90"),
+        ),
+    ] {
+        let line = format!("orthoslip {what}: {}", path.display());
+        assert!(
+            configure.contains(&line),
+            "configure did not report `{line}`"
+        );
+    }
     run(command("cmake")
         .arg("--build")
         .arg(&build)
@@ -256,11 +289,23 @@ fn install_and_consume() {
             "{file} not installed"
         );
     }
-    assert_eq!(
-        std::fs::read(prefix.join("include/orthoslip.h")).unwrap(),
-        std::fs::read(source.join("include/orthoslip.h")).unwrap(),
-        "installed header differs from include/orthoslip.h"
-    );
+    for (installed, committed) in [
+        ("include/orthoslip.h", "include/orthoslip.h"),
+        ("include/orthoslip.hpp", "c_examples/orthoslip.hpp"),
+        (
+            "share/orthoslip/fortran/orthoslip_mod.f90",
+            "c_examples/orthoslip_mod.f90",
+        ),
+    ] {
+        let read = |p: PathBuf| {
+            std::fs::read(&p).unwrap_or_else(|e| panic!("{} not installed: {e}", p.display()))
+        };
+        assert_eq!(
+            read(prefix.join(installed)),
+            read(source.join(committed)),
+            "installed {installed} differs from {committed}"
+        );
+    }
 
     let mut scenes = Vec::new();
     let consumers = ["c", "cpp", "f90"];

@@ -12,10 +12,11 @@
 //! `cargo run --release --example stability_map` maps the same behaviour over the whole plane.
 
 use std::panic::{AssertUnwindSafe, catch_unwind};
+use std::sync::OnceLock;
 
 use orthoslip::model_error::{self, Approximation};
 use orthoslip::{
-    Contact, Coupling, Error, Material, Method, Profile, coupled, goodman, lcp, spence,
+    Contact, Coupling, Error, Material, Method, Profile, StickEdge, coupled, goodman, lcp, spence,
 };
 
 /// Panels of the LCP runs (its cheapest grid).
@@ -315,26 +316,50 @@ fn estimate(s: Solver, k: &Coupling, p: &dyn Profile) -> Option<f64> {
     Some(p.numerical_error() + model)
 }
 
-/// Method `s`'s estimate against its true error at each (b*, mu~) where it, its estimate and
-/// the reference exist: (label, estimate, true error).
-fn estimates_against_reference(s: Solver, points: &[(f64, f64)]) -> Vec<(String, f64, f64)> {
-    points
+/// The reference stick edges at the points of `grid` (COUPLED at [`REFERENCE_TOL`]),
+/// computed once for the four estimate checks that share them.
+fn grid_references(grid: Grid) -> &'static [((f64, f64), Option<StickEdge>)] {
+    type Refs = OnceLock<Vec<((f64, f64), Option<StickEdge>)>>;
+    static DIAGONAL: Refs = OnceLock::new();
+    static FULL: Refs = OnceLock::new();
+    let cache = match grid {
+        Grid::Diagonal => &DIAGONAL,
+        Grid::Full => &FULL,
+    };
+    cache.get_or_init(|| {
+        grid.points()
+            .into_iter()
+            .map(|(b, mu)| {
+                let k = Coupling { bp: b, bq: b, mu };
+                (
+                    (b, mu),
+                    coupled::solve(&k, REFERENCE_TOL).ok().map(|r| r.edge()),
+                )
+            })
+            .collect()
+    })
+}
+
+/// Method `s`'s estimate against its true error at each (b*, mu~) of `grid` where it, its
+/// estimate and the reference exist: (label, estimate, true error).
+fn estimates_against_reference(s: Solver, grid: Grid) -> Vec<(String, f64, f64)> {
+    grid_references(grid)
         .iter()
-        .filter_map(|&(b, mu)| {
+        .filter_map(|&((b, mu), reference)| {
             let k = Coupling { bp: b, bq: b, mu };
-            let reference = coupled::solve(&k, REFERENCE_TOL).ok()?;
+            let reference = reference?;
             let p = solve(s, &k, COUPLED_TOL).ok()?;
             Some((
                 format!("b* = {b}, mu~ = {mu}"),
                 estimate(s, &k, p.as_ref())?,
-                edge_error(p.as_ref(), &reference),
+                p.edge().distance(reference),
             ))
         })
         .collect()
 }
 
-fn check_bounds(s: Solver, points: &[(f64, f64)], min_compared: usize) {
-    let rows = estimates_against_reference(s, points);
+fn check_bounds(s: Solver, grid: Grid, min_compared: usize) {
+    let rows = estimates_against_reference(s, grid);
     for (label, est, err) in &rows {
         println!("{s:?} {label}: estimate {est:.2e}, true error {err:.2e}");
     }
@@ -353,32 +378,51 @@ fn check_bounds(s: Solver, points: &[(f64, f64)], min_compared: usize) {
     );
 }
 
-/// The small grid of the estimate checks.
-fn grid() -> Vec<(f64, f64)> {
-    [0.1, 0.5, 0.9]
-        .into_iter()
-        .flat_map(|b| [0.2, 1.0, 5.0].map(|mu| (b, mu)))
-        .collect()
+/// The grids of the estimate checks: b* = 0.1, 0.5, 0.9 against mu~ = 0.2, 1, 5, in full (the
+/// slow tier) or along the diagonal (the fast tier).
+#[derive(Clone, Copy, Debug)]
+enum Grid {
+    Diagonal,
+    Full,
+}
+
+impl Grid {
+    fn points(self) -> Vec<(f64, f64)> {
+        let (bs, mus) = ([0.1, 0.5, 0.9], [0.2, 1.0, 5.0]);
+        match self {
+            Grid::Diagonal => bs.into_iter().zip(mus).collect(),
+            Grid::Full => bs.into_iter().flat_map(|b| mus.map(|mu| (b, mu))).collect(),
+        }
+    }
 }
 
 #[test]
 fn goodman_model_error_bound_holds() {
-    check_bounds(Solver::Goodman, &grid(), 6);
+    check_bounds(Solver::Goodman, Grid::Diagonal, 2);
 }
 
 #[test]
 fn spence_model_error_bound_holds() {
-    check_bounds(Solver::Spence, &grid(), 6);
+    check_bounds(Solver::Spence, Grid::Diagonal, 2);
 }
 
 #[test]
 fn coupled_estimate_bounds_its_error() {
-    check_bounds(Solver::Coupled, &grid(), 6);
+    check_bounds(Solver::Coupled, Grid::Diagonal, 2);
 }
 
 #[test]
 fn lcp_estimate_bounds_its_error() {
-    check_bounds(Solver::Lcp, &grid(), 6);
+    check_bounds(Solver::Lcp, Grid::Diagonal, 2);
+}
+
+/// The four estimate checks above on the whole 3 x 3 grid.
+#[test]
+#[ignore = "slow tier: the four estimate checks on the 3 x 3 grid (COUPLED references at 1e-12)"]
+fn estimates_bound_their_errors_on_the_grid() {
+    for s in SOLVERS {
+        check_bounds(s, Grid::Full, 6);
+    }
 }
 
 /// Near full stick with 1 - c ~ h (measured by the stability map, LCP on 200 panels: b* = 0.53,

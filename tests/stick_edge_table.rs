@@ -24,12 +24,25 @@ fn distance(lc: f64, e: StickEdge) -> f64 {
 }
 
 #[test]
+#[ignore = "slow tier: COUPLED references at two nodes of every third patch"]
 fn patches_reproduce_coupled_at_their_nodes() {
+    patches_reproduce_coupled_at(3, 2);
+}
+
+/// The fast tier's share of [`patches_reproduce_coupled_at_their_nodes`]: one node of every
+/// twelfth patch.
+#[test]
+fn patches_reproduce_coupled_at_a_few_nodes() {
+    patches_reproduce_coupled_at(12, 1);
+}
+
+/// `per_patch` random nodes of every `step`-th patch against COUPLED.
+fn patches_reproduce_coupled_at(step: usize, per_patch: usize) {
     let mut rng = fastrand::Rng::with_seed(20261123);
     let mut worst: f64 = 0.0;
-    for p in patches().iter().step_by(3) {
+    for p in patches().iter().step_by(step) {
         let all = nodes(p.beta, p.zeta, p.rows, p.cols);
-        for _ in 0..2 {
+        for _ in 0..per_patch {
             let (beta, zeta) = all[rng.usize(..all.len())];
             let (b, mu) = coupling_at(beta, zeta);
             let lc = evaluate(p.coef, (p.rows, p.cols), (p.beta, p.zeta), (beta, zeta));
@@ -42,10 +55,22 @@ fn patches_reproduce_coupled_at_their_nodes() {
 }
 
 #[test]
+#[ignore = "slow tier: a random point in every patch against COUPLED"]
 fn bounds_hold_off_the_nodes() {
+    bounds_hold_off_the_nodes_of(1);
+}
+
+/// The fast tier's share of [`bounds_hold_off_the_nodes`]: every fourth patch.
+#[test]
+fn bounds_hold_off_the_nodes_of_a_few_patches() {
+    bounds_hold_off_the_nodes_of(4);
+}
+
+/// A random point in every `step`-th patch against COUPLED.
+fn bounds_hold_off_the_nodes_of(step: usize) {
     let mut rng = fastrand::Rng::with_seed(97);
     let mut worst: f64 = 0.0;
-    for p in patches() {
+    for p in patches().iter().step_by(step) {
         let beta = p.beta[0] + rng.f64() * (p.beta[1] - p.beta[0]);
         let zeta = p.zeta[0] + rng.f64() * (p.zeta[1] - p.zeta[0]);
         let (b, mu) = coupling_at(beta, zeta);

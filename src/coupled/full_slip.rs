@@ -18,8 +18,10 @@
 //! COUPLED (tests.rs) c / law = 1 + a1(b*) mu~ + O(mu~^2), a1 = -0.05 (b* = 0.1), -0.17 (0.3),
 //! -0.33 (0.5), -0.60 (0.7), -1.2 (0.9), -2.3 (0.99) (c below the law everywhere measured):
 //! the law is used only where its c is below the tolerance, and its error estimate is c
-//! itself. Its c underflows to 0 below the smallest double (mu~ -> 0); ln c stays finite, so
-//! the tractions do too.
+//! itself. Its c underflows to 0 below the smallest double (mu~ -> 0), and ln c itself to
+//! -infinity where pi / (2 mu) overflows (subnormal mu); the stick zone's pressure
+//! p_fs(c) = norm c^(2g - 1) is formed as one product that tends to norm / (1 - b*^2), so the
+//! tractions stay finite.
 
 use std::f64::consts::PI;
 
@@ -36,13 +38,29 @@ const TRACTION_FACTOR: f64 = 10.0;
 /// ln c of the law c = 4 (1 - b*^2)^(pi / (2 b* mu~)) = 4 (1 - bp bq)^(pi / (2 bp mu)) (b* mu~
 /// = bp mu), finite where c underflows; at bp = 0 Goodman's limit ln 4 - pi bq / (2 mu).
 pub(crate) fn ln_c_law(k: &Coupling) -> f64 {
-    // ln(1 - bp bq) / bp -> -bq as bp -> 0 (no 0/0)
-    let per_bp = if k.bp > 0.0 {
+    4f64.ln() + PI / (2.0 * k.mu) * law_per_bp(k)
+}
+
+/// ln(1 - bp bq) / bp, -> -bq as bp -> 0 (no 0/0).
+fn law_per_bp(k: &Coupling) -> f64 {
+    if k.bp > 0.0 {
         (-k.bp * k.bq).ln_1p() / k.bp
     } else {
         -k.bq
-    };
-    4f64.ln() + PI / (2.0 * k.mu) * per_bp
+    }
+}
+
+/// ln(p_fs(c) / norm) = (2g - 1) ln c = -k0 ln c at the law's c, k0 = 2 arctan(bp mu) / pi,
+/// taken as one product: -(2 / pi) arctan(bp mu) ln 4 - (arctan(bp mu) / mu) ln(1 - bp bq) / bp.
+/// As mu -> 0, ln c -> -infinity and k0 -> 0 while their product tends to -ln(1 - b*^2) (the
+/// stick zone's pressure stays finite); formed apart, they overflow to -infinity and
+/// underflow to 0 and multiply to NaN (mu = 4.9e-324 gave p(0) = NaN; issue 26).
+fn ln_stick_pressure_law(k: &Coupling) -> f64 {
+    let t = k.bp * k.mu;
+    // arctan(t) / mu = bp arctan(t) / t, = bp to rounding for t < 1e-8 (also where t
+    // underflows)
+    let atan_per_mu = if t < 1e-8 { k.bp } else { t.atan() / k.mu };
+    -(2.0 / PI) * t.atan() * 4f64.ln() - atan_per_mu * law_per_bp(k)
 }
 
 /// The full-slip solution with the law's stick edge.
@@ -55,6 +73,9 @@ pub(crate) struct FullSlip {
     g: f64,
     /// sin(pi g) / pi, the normalisation of p_fs.
     norm: f64,
+    /// ln(p_fs(c) / norm) = (2g - 1) ln c, the pressure on the stick zone (finite where c
+    /// underflows: [`ln_stick_pressure_law`]).
+    ln_stick: f64,
 }
 
 impl FullSlip {
@@ -66,15 +87,18 @@ impl FullSlip {
             ln_c: ln_c_law(k),
             g,
             norm: (PI * g).sin() / PI,
+            ln_stick: ln_stick_pressure_law(k),
         }
     }
 
     /// The full-slip tractions of `k` (mu > 0) cut off at a stick edge c known otherwise (the
     /// auxetic limit, `super::auxetic`).
     pub(crate) fn with_edge(k: &Coupling, c: f64) -> Self {
+        let s = Self::new(k);
         FullSlip {
             ln_c: c.ln(),
-            ..Self::new(k)
+            ln_stick: (2.0 * s.g - 1.0) * c.ln(),
+            ..s
         }
     }
 
@@ -115,8 +139,14 @@ impl Profile for FullSlip {
             let p = self.p(x);
             (p, mu * p)
         } else {
-            let p = self.norm * ((2.0 * self.g - 1.0) * self.ln_c).exp();
-            (p, mu * p * (x.ln() - self.ln_c).exp())
+            // x = 0 is the whole stick zone where c underflows (ln c = -infinity): q(0) = 0
+            let p = self.norm * self.ln_stick.exp();
+            let q = if x > 0.0 {
+                mu * p * (x.ln() - self.ln_c).exp()
+            } else {
+                0.0
+            };
+            (p, q)
         }
     }
 }

@@ -173,13 +173,21 @@ impl LargeFriction {
         let (mut p, mut q) = (0.0, 0.0);
         for (a, s) in pairs() {
             let (ci, wi) = (s.edge.c, s.edge.one_minus_c);
-            let xi = if !stick {
+            let mut xi = if !stick {
                 1.0 - u * wi / w
             } else if x < 0.5 {
                 x * ci / c
             } else {
                 1.0 - (ci * u + (wi - w)) / c
             };
+            if xi == ci && ci < 1.0 {
+                // exactly at a solution's own stick edge its slip panel's (x - c)^g weights
+                // vanish (g ~ 1e-7: they reach 1/2 only 1e-(3e6) from c) and its q = mu_i p
+                // jumps to mu_i times the stick side's p, which the extrapolation in 1/mu
+                // cannot take (p = -0.24 at x = c, b* = 0.89, mu~ = 1e7): the next double on
+                // the side x lies on, where q is continuous across c to rounding
+                xi = if stick { ci.next_down() } else { ci.next_up() };
+            }
             let (pi, qi) = s.half_line_tractions(xi);
             (p, q) = (p + a * pi, q + a * qi);
         }
@@ -299,6 +307,7 @@ mod tests {
     /// Continuity where thin slip zones switch to the extrapolation from [`thin_base`]: g =
     /// SMALL_G at b* = 0.12 (mu~ = 2.65e3, 1 - c = 5.4e-17, nodes 442 .. 1768).
     #[test]
+    #[ignore = "slow tier: the thin-slip switch to the extrapolation, 1 - c = 5.4e-17 (panels up to mu~ = 1768)"]
     fn thin_extrapolation_continues_the_panels() {
         let b = 0.12;
         continuous_at(

@@ -156,11 +156,17 @@ pub(crate) fn graded_plain(
     ends.push(width);
     ends.windows(2)
         .map(|e| {
-            let (s0, s1) = if span < 0.0 {
+            if span < 0.0 {
                 (-e[1], -e[0])
             } else {
                 (e[0], e[1])
-            };
+            }
+        })
+        // panels narrower than the doubles at x (c + s = c next to c ~ 1: the thin slip zone
+        // of a large-friction scene, 1 - c = 1.6e-11) have no width and nothing to fit: their
+        // h = 0 made the whole field NaN
+        .filter(|&(s0, s1)| x_of(s0) < x_of(s1))
+        .map(|(s0, s1)| {
             let h = 0.5 * (s1 - s0);
             fitted_panel(x_of(s0), x_of(s1), Weight::One, |omt, opt| {
                 tractions(if opt <= omt {

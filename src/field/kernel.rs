@@ -603,6 +603,24 @@ const BLOCK: usize = 32;
 /// sum_j w_j a_j b_j, in [`LANES`] independent accumulators (so that the compiler can
 /// vectorise it); `b` all ones when None.
 #[inline(always)]
+/// 1 / z for the moment series, without overflow: Smith's quotient (|z|^2 overflows from
+/// |z| ~ 1.3e154 on, and x + i beta y from |y| ~ DBL_MAX / beta), and 0 where z itself is
+/// infinite (the series' limit: every transform decays like 1 / z).
+fn far_inverse(z: C64) -> C64 {
+    if !(z.re.is_finite() && z.im.is_finite()) {
+        return C64::new(0.0, 0.0);
+    }
+    if z.re.abs() >= z.im.abs() {
+        let r = z.im / z.re;
+        let d = z.re + z.im * r;
+        C64::new(1.0 / d, -r / d)
+    } else {
+        let r = z.re / z.im;
+        let d = z.im + z.re * r;
+        C64::new(r / d, -1.0 / d)
+    }
+}
+
 fn dot(w: &[f64], a: &[f64], b: Option<&[f64]>) -> f64 {
     let mut acc = [0.0; LANES];
     let chunks = w.chunks_exact(LANES).zip(a.chunks_exact(LANES));
@@ -670,7 +688,7 @@ impl Kernel {
     fn far_field(&self, z: C64, deriv: bool) -> Transforms {
         let terms = ((32.0 / z.norm_sqr().log10()) / 2.0).ceil() as usize + 1;
         let terms = terms.min(MOMENTS / 2);
-        let inv = z.inv();
+        let inv = far_inverse(z);
         let w = inv * inv;
         let (mut sp, mut sq) = (C64::new(0.0, 0.0), C64::new(0.0, 0.0));
         let (mut dp, mut dq) = (sp, sq);

@@ -91,6 +91,12 @@ impl Roots {
 /// below every panel's resolution, so that its transforms are the limits from inside.
 const SURFACE_DEPTH: f64 = 1e-300;
 
+/// Depth above which [`Field::stresses`] gives the surface limit: there the derivative terms
+/// y d_f(z), d_f ~ 1 / y^2 next to the surface's singular points, are no longer representable
+/// (y^2 underflows), while the stresses differ from their surface limits by O(|y| / l) for
+/// the smallest panel scale l (1e-21 and up), far below rounding.
+const SURFACE_LIMIT_ABOVE: f64 = 1e-150;
+
 /// The field of one solution (built lazily by [`crate::Solution`], shared by its threads).
 #[derive(Clone, Debug)]
 pub(crate) struct Field {
@@ -147,8 +153,10 @@ impl Field {
         }
         let r = &self.roots;
         let zero = C64::new(0.0, 0.0);
-        let (mp, mq, dp, dq) = if y == 0.0 {
-            // the limit from inside: both points at x - i0, d_f = 0, as a point SURFACE_DEPTH
+        let (mp, mq, dp, dq) = if y > -SURFACE_LIMIT_ABOVE {
+            // the limit from inside, also for depths below SURFACE_LIMIT_ABOVE (y = -4.9e-324
+            // and -1e-300 gave NaN through the derivative terms y d_f): both points at x - i0,
+            // d_f = 0, as a point SURFACE_DEPTH
             // below the axis, so that every panel sees it on the same side (at x - i0
             // exactly at a panel end, the end's own substitute point and the other panels'
             // signed zeros disagreed: sxx at the end of the carbon ply's punch-edge panel,

@@ -86,6 +86,12 @@ impl Slip {
         for j in 0..LEVELS {
             let (a, b) = (d * 0.5f64.powi(j as i32 + 1), d * 0.5f64.powi(j as i32));
             let (m, h) = (self.c + 0.5 * (a + b), 0.5 * (b - a));
+            if h == 0.0 {
+                // the panels' widths have underflowed (x within a subnormal distance of c):
+                // nothing left to add, and the slope at c itself may be infinite (c = 0 at
+                // small friction, where p ~ |x|^(-k0)): 0 * inf would be NaN
+                break;
+            }
             for (t, w) in nodes.iter().zip(weights) {
                 let (p, sxx) = slope_terms(m + h * t);
                 u += h * w * (self.nu * p + sxx / self.delta2);
