@@ -5,32 +5,13 @@
 //! their ratio. Writes docs/spectral_timing.md.
 //!
 //! `cargo run --release --example spectral_timing`
+mod support;
+
 use std::time::{Duration, Instant};
 
+use orthoslip::Result;
 use orthoslip::coupled::{CoupledSolution, solve_spectral_to, solve_to};
 use orthoslip::problem::{Profile, traction_distance};
-use orthoslip::{Material, Result};
-
-fn materials() -> Vec<(&'static str, Material)> {
-    vec![
-        (
-            "carbon/epoxy ply",
-            Material::plane_stress(181e9, 10.3e9, 7.17e9, 0.28).unwrap(),
-        ),
-        (
-            "isotropic steel, plane strain",
-            Material::plane_strain(210e9, 210e9, 210e9, 210e9 / 2.6, 0.3, 0.3, 0.3).unwrap(),
-        ),
-        (
-            "kappa = 0.4 < 1 (complex roots)",
-            Material::effective(1.0, 0.25, 1.3, 0.4).unwrap(),
-        ),
-        (
-            "strongly orthotropic, delta = 10",
-            Material::effective(1.0, 0.1, 10.0, 3.0).unwrap(),
-        ),
-    ]
-}
 
 /// Median wall time over repeated solves (at least 5 runs and 0.3 s, at most 200).
 fn time(f: impl Fn() -> Result<CoupledSolution>) -> (Duration, Result<CoupledSolution>) {
@@ -67,7 +48,7 @@ fn main() {
             "## c to {tol:.0e}, tractions to {ttol:.0e}\n\n| scene | spectral: regime, unknowns | time | panels: unknowns | time | ratio | c distance | traction distance |\n|---|---|---|---|---|---|---|---|\n"
         );
         let (mut ts, mut tp) = (Vec::new(), Vec::new());
-        for (name, m) in materials() {
+        for (name, m) in support::scene_materials() {
             for mu in [0.1, 0.3, 1.0] {
                 let k = m.coupling(mu);
                 let (a, sa) = time(|| solve_spectral_to(&k, tol, ttol));
