@@ -90,6 +90,11 @@ impl Contact {
         Ok(())
     }
 
+    /// The material.
+    pub fn material(&self) -> &Material {
+        &self.material
+    }
+
     /// The coupling constants (bp, bq, mu) of this scene.
     pub fn coupling(&self) -> Coupling {
         self.material.coupling(self.mu)

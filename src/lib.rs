@@ -19,6 +19,7 @@
 
 pub mod contact;
 pub mod error;
+pub mod fretting;
 pub mod material;
 pub mod model_error;
 pub mod problem;

@@ -34,6 +34,10 @@ use crate::error::{Error, Result};
 use crate::problem::Coupling;
 use faer::Mat;
 
+/// Slip increments up to this (units of pi B P) are rounding, not slip: ten times the
+/// complementarity tolerance the step is solved to.
+const SLIP_FLOOR: f64 = 10.0 * COMPLEMENTARITY_TOL;
+
 /// What a node did over the step that reached a state.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Zone {
@@ -102,7 +106,7 @@ impl State {
             .sum::<f64>()
     }
     /// Elastic energy (1/2)(P V + int q u) up to a constant (units of pi B P^2).
-    fn elastic_energy(&self, h: f64) -> f64 {
+    pub(crate) fn elastic_energy(&self, h: f64) -> f64 {
         let qu: f64 = self.q.iter().zip(&self.surface).map(|(q, u)| q * u).sum();
         0.5 * (self.normal + h * qu)
     }
@@ -383,11 +387,14 @@ impl History {
             )));
         }
         let ds = root.f[..m].to_vec();
+        // A node slips when its slip increment exceeds both its gap to the friction bound and
+        // the complementarity tolerance: a node held at the bound (|q| = mu p) whose slip is
+        // rounding (~1e-17, e.g. in a shaken-down cycle) sticks.
         let zones: Vec<Zone> = (0..m)
             .map(|i| {
-                if ds[i] > root.gl[i] {
+                if ds[i] > root.gl[i].max(SLIP_FLOOR) {
                     Zone::SlipPositive
-                } else if -ds[i] > root.gu[i] {
+                } else if -ds[i] > root.gu[i].max(SLIP_FLOOR) {
                     Zone::SlipNegative
                 } else {
                     Zone::Stick
@@ -539,7 +546,8 @@ pub fn cycles(k: &Coupling, n: usize, q_amp: f64, n_cycles: usize, steps: usize)
     })
 }
 
-fn cycle_summary(k: &Coupling, h: f64, start: &State, states: Vec<State>) -> Cycle {
+/// The summary of one cycle from its start state and the states after each of its steps.
+pub(crate) fn cycle_summary(k: &Coupling, h: f64, start: &State, states: Vec<State>) -> Cycle {
     let m = start.q.len();
     let mut lo = start.relative();
     let mut hi = lo.clone();

@@ -246,7 +246,7 @@ fn energy_balance_over_cycles_and_dissipation_from_q_times_slip() {
     let k = ply(0.3);
     let run = cycles(&k, 50, 0.18, 2, 3).unwrap();
     let h = run.h;
-    for cy in &run.cycles {
+    for (i, cy) in run.cycles.iter().enumerate() {
         for s in &cy.states {
             check_state(&k, h, s);
         }
@@ -257,7 +257,9 @@ fn energy_balance_over_cycles_and_dissipation_from_q_times_slip() {
             "balance residual {r:e}, scale {scale:e}"
         );
         let sum: f64 = cy.states.iter().map(|s| s.dissipation).sum();
-        assert!((sum - cy.dissipation).abs() < 1e-14 && cy.dissipation > 0.0);
+        assert!((sum - cy.dissipation).abs() < 1e-14);
+        // the first unloading slips, the second cycle has shaken down (section 7)
+        assert_eq!(cy.dissipation > 1e-6, i == 0, "W = {:e}", cy.dissipation);
         assert_eq!(cy.loop_points.len(), cy.states.len() + 1);
     }
 }

@@ -1,0 +1,786 @@
+//! Tangential load and fretting cycles (issue 27; theory in docs/theory_tangential.md, use in
+//! docs/fretting.md): the punch pressed by P, then pulled sideways by Q and cycled between
+//! +Q* and -Q*.
+//!
+//! Two entry points, both method-agnostic in their results:
+//! - [`LoadPath`]: the normal-load state, then Q moved monotonically to any value, step by
+//!   step, as an FE code scripts a load path; the stick set [c1, c2], p, q and the zones (with
+//!   their slip directions) of the current state;
+//! - [`Fretting::solve`]: the first loading 0 -> Q*, then cycles Q* -> -Q* -> Q* until the
+//!   state repeats ([`CycleState::Shakedown`] or [`CycleState::SteadySlip`]) or the cycle
+//!   limit is reached, with per cycle the dissipated energy, the slip amplitude, the
+//!   Q-displacement loop, the Ruiz parameters and the stick sets.
+//!
+//! The method is a [`CycleMethod`]; the only one today is [`CycleMethod::LcpHistory`], the
+//! paper's grid LCP with a loading history (`crate::lcp::history`): first order in the panel
+//! width and in the load step. Every result carries an error estimate from two more runs, one
+//! with half the panels and one with half the load steps (each error is first order, so the
+//! difference from the halved run estimates the error of the full run; the two are added and
+//! doubled for safety, the observed orders being 0.7-1.3).
+//!
+//! Units: x per a; p, q, tau and sigma_xx per P/a; displacements and slip amplitudes per P/E;
+//! energies per unit thickness in P^2/E; F1 in P^2/(a E); F2 in P^3/(a^2 E). E is the
+//! effective modulus of [`crate::Material::constants`]. Values on the grid are panel values
+//! at the 2n panel midpoints [`Fretting::nodes`] (piecewise constant in x).
+
+use std::f64::consts::PI;
+
+use crate::contact::Contact;
+use crate::error::{Error, Result};
+use crate::lcp::history::{self, History, State};
+use crate::problem::Coupling;
+
+pub use crate::lcp::history::Zone;
+
+/// How a cycle is solved; the discriminants are the C ABI's `orthoslip_cycle_method` values
+/// (append-only: an exact method will get the next value).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum CycleMethod {
+    /// The paper's grid LCP with a loading history: 2n uniform panels on the contact, one
+    /// complementarity problem per load step (first order in the panel width and the step).
+    LcpHistory = 0,
+}
+
+impl CycleMethod {
+    /// All methods, in discriminant order.
+    pub const ALL: [CycleMethod; 1] = [CycleMethod::LcpHistory];
+
+    /// The method with this C ABI value, if any.
+    pub fn from_code(code: i32) -> Option<CycleMethod> {
+        CycleMethod::ALL.into_iter().find(|m| *m as i32 == code)
+    }
+}
+
+/// Default panels per half-width.
+pub const DEFAULT_PANELS: usize = 100;
+/// Default load steps per quarter cycle (per call of [`LoadPath::load`]).
+pub const DEFAULT_STEPS: usize = 10;
+/// Default cycle limit.
+pub const DEFAULT_MAX_CYCLES: usize = 10;
+/// Default tolerance for "the state repeats".
+pub const DEFAULT_REPEAT_TOLERANCE: f64 = 1e-8;
+
+/// Options of a load path or a fretting run.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct CycleOptions {
+    /// The method (default [`CycleMethod::LcpHistory`]).
+    pub method: CycleMethod,
+    /// Panels per half-width n (2n on the contact), 8 ..= 2000; default 100. Cost grows like
+    /// n^3 (one dense LU of order 2n + 1 per Newton step).
+    pub panels: usize,
+    /// Load steps per quarter cycle (the first loading 0 -> Q* has this many, each half
+    /// cycle twice as many; [`LoadPath::load`] this many per call), 2 ..= 10000; default 10.
+    pub steps: usize,
+    /// Cycles at most, 1 ..= 10000; default 10.
+    pub max_cycles: usize,
+    /// A cycle repeats when its end state differs from its start state by at most this:
+    /// int |q_end - q_start| dx (units of P) and |U_end - U_start| (units of P/E). A repeating
+    /// cycle dissipating at most this (units of P^2/E) is shakedown, else a steady slip
+    /// cycle. Finite, > 0; default 1e-8.
+    pub repeat_tolerance: f64,
+}
+
+impl Default for CycleOptions {
+    fn default() -> Self {
+        Self {
+            method: CycleMethod::LcpHistory,
+            panels: DEFAULT_PANELS,
+            steps: DEFAULT_STEPS,
+            max_cycles: DEFAULT_MAX_CYCLES,
+            repeat_tolerance: DEFAULT_REPEAT_TOLERANCE,
+        }
+    }
+}
+
+impl CycleOptions {
+    /// Checks the ranges documented on the fields.
+    pub fn validate(&self) -> Result<()> {
+        let bad = |what: String| Err(Error::InvalidArgument(what));
+        if !(8..=2000).contains(&self.panels) {
+            return bad(format!(
+                "panels per half-width = {} must be in 8 ..= 2000",
+                self.panels
+            ));
+        }
+        if !(2..=10000).contains(&self.steps) {
+            return bad(format!(
+                "load steps per quarter cycle = {} must be in 2 ..= 10000",
+                self.steps
+            ));
+        }
+        if !(1..=10000).contains(&self.max_cycles) {
+            return bad(format!(
+                "cycle limit = {} must be in 1 ..= 10000",
+                self.max_cycles
+            ));
+        }
+        let t = self.repeat_tolerance;
+        if !(t.is_finite() && t > 0.0) {
+            return bad(format!("repeat tolerance = {t} must be finite and > 0"));
+        }
+        Ok(())
+    }
+}
+
+/// A value and the estimate of its error (absolute, same units; +infinity when a check run
+/// failed).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Estimate {
+    /// The value.
+    pub value: f64,
+    /// The estimate of |value - exact|.
+    pub error: f64,
+}
+
+/// How a fretting run ended; the discriminants are the C ABI's `orthoslip_cycle_state`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum CycleState {
+    /// The last cycle repeats its start state and dissipates nothing (to the repeat
+    /// tolerance): every later cycle is elastic.
+    Shakedown = 0,
+    /// The last cycle repeats its start state and dissipates energy: every later cycle is
+    /// the same.
+    SteadySlip = 1,
+    /// No cycle up to the limit repeated its start state.
+    CycleLimitReached = 2,
+}
+
+/// One state on the load path.
+#[derive(Clone, Debug)]
+pub struct PathPoint {
+    /// Q / P.
+    pub q_over_p: f64,
+    /// The stick set [c1, c2] (the largest run of sticking panels over the step that reached
+    /// this state, ends interpolated, +-1 at a punch edge; NaN when nothing sticks).
+    pub stick: (f64, f64),
+    /// The punch's tangential displacement U (units of P/E, in a fixed gauge: differences
+    /// along the path are meaningful).
+    pub punch: f64,
+    /// Panel values of p at the nodes (units of P/a).
+    pub p: Vec<f64>,
+    /// Panel values of q at the nodes (units of P/a).
+    pub q: Vec<f64>,
+    /// What each panel did over the step that reached this state.
+    pub zones: Vec<Zone>,
+}
+
+impl PathPoint {
+    fn from_state(s: &State, unit: f64) -> Self {
+        Self {
+            q_over_p: s.q_over_p,
+            stick: s.stick,
+            punch: s.punch * unit,
+            p: s.p.clone(),
+            q: s.q.clone(),
+            zones: s.zones.clone(),
+        }
+    }
+}
+
+/// The peak of a profile along the contact.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Peak {
+    /// The largest value (0 when the profile vanishes).
+    pub value: f64,
+    /// Where (a node; NaN when the profile vanishes everywhere).
+    pub x: f64,
+    /// Error estimate of the value.
+    pub error: f64,
+    /// Error estimate of the position (0 when both runs find no peak).
+    pub x_error: f64,
+}
+
+/// One cycle Q* -> -Q* -> Q*.
+#[derive(Clone, Debug)]
+pub struct CycleResult {
+    /// Energy dissipated in the cycle, int mu p |ds| dx summed over its steps (units of
+    /// P^2/E per unit thickness; docs/theory_tangential.md (T8)).
+    pub dissipation: Estimate,
+    /// Half the peak-to-peak relative tangential displacement of solid and punch over the
+    /// cycle, per node (units of P/E).
+    pub slip_amplitude: Vec<f64>,
+    /// Error estimate of the slip amplitude: the largest over the nodes.
+    pub slip_amplitude_error: f64,
+    /// The loop: (Q/P, U) at the cycle's start and after each step (U in P/E).
+    pub loop_points: Vec<(f64, f64)>,
+    /// Work of Q over the cycle, the loop's area by the trapezoidal rule (P^2/E).
+    pub loop_work: f64,
+    /// Work of P over the cycle, P (V_end - V_start) (P^2/E; p changes with Q when bp > 0).
+    pub normal_work: f64,
+    /// Change of the elastic energy over the cycle (P^2/E).
+    pub energy_change: f64,
+    /// loop_work + normal_work - (mid-step dissipation + energy_change), (T9) summed:
+    /// rounding (NaN when bp = 0, where the operator is not symmetric).
+    pub balance_residual: f64,
+    /// tau_max: the largest |q| at each node over the cycle (P/a).
+    pub tau_max: Vec<f64>,
+    /// The largest surface sigma_xx(x, 0) at each node over the cycle (P/a, tension
+    /// positive; docs/theory.md (F2)).
+    pub sxx_max: Vec<f64>,
+    /// Ruiz's F1 = tau_max * slip amplitude per node (P^2/(a E)).
+    pub f1: Vec<f64>,
+    /// Ruiz's F2 = max(sxx_max, 0) * tau_max * slip amplitude per node (P^3/(a^2 E)).
+    pub f2: Vec<f64>,
+    /// Peak of F1 along the contact.
+    pub f1_peak: Peak,
+    /// Peak of F2 along the contact.
+    pub f2_peak: Peak,
+    /// The stick set at Q = -Q* (middle of the cycle).
+    pub stick_at_minus: (f64, f64),
+    /// The stick set at Q = +Q* (end of the cycle).
+    pub stick_at_plus: (f64, f64),
+    /// Error estimate of the four stick-set ends (the largest).
+    pub stick_error: f64,
+    /// The states after each step of the cycle.
+    pub path: Vec<PathPoint>,
+}
+
+/// A fretting run: normal load P, Q: 0 -> Q*, then cycles Q* -> -Q* -> Q*.
+#[derive(Clone, Debug)]
+pub struct Fretting {
+    /// The method used.
+    pub method: CycleMethod,
+    /// The options used.
+    pub options: CycleOptions,
+    /// The amplitude Q*/P.
+    pub q_amp_over_p: f64,
+    /// The 2n panel midpoints on [-1, 1] where profiles are given.
+    pub nodes: Vec<f64>,
+    /// The panel width (units of a).
+    pub h: f64,
+    /// The normal-load state (Q = 0).
+    pub normal_load: PathPoint,
+    /// The states of the first loading 0 -> Q*.
+    pub first_loading: Vec<PathPoint>,
+    /// Energy dissipated in the first loading (P^2/E).
+    pub first_loading_dissipation: Estimate,
+    /// The cycles, in order.
+    pub cycles: Vec<CycleResult>,
+    /// How the run ended.
+    pub state: CycleState,
+}
+
+/// sqrt(2 (1 + kappa)) / delta = pi B E: pi B P (the LCP's displacement unit) in P/E, and
+/// pi B P^2 (its energy unit) in P^2/E.
+fn unit(contact: &Contact) -> f64 {
+    let k = contact.material().constants();
+    (2.0 * (1.0 + k.kappa)).sqrt() / k.delta
+}
+
+/// Checks the amplitude or load level Q/P against the friction: finite, |Q| < mu P.
+fn check_load(q_over_p: f64, mu: f64, what: &str) -> Result<()> {
+    if !q_over_p.is_finite() {
+        return Err(Error::InvalidArgument(format!(
+            "{what} Q/P = {q_over_p} is not finite"
+        )));
+    }
+    if mu <= 0.0 {
+        return Err(Error::InvalidArgument(format!(
+            "friction mu = {mu}: a tangential load needs mu > 0 (without friction any Q slides)"
+        )));
+    }
+    if q_over_p.abs() >= mu {
+        return Err(Error::InvalidArgument(format!(
+            "{what} |Q/P| = {} >= mu = {mu} is gross sliding, not partial slip",
+            q_over_p.abs()
+        )));
+    }
+    Ok(())
+}
+
+/// The error estimates are this times the differences from the check runs: the observed
+/// orders are 0.7-1.3 rather than 1 (docs/theory_tangential.md section 7), and at order 0.8
+/// the difference from a halved run is 0.74 of the error.
+const SAFETY: f64 = 2.0;
+
+/// One grid run's raw results.
+struct Run {
+    h: f64,
+    nodes: Vec<f64>,
+    normal: State,
+    first: Vec<State>,
+    /// (start state, the cycle) per cycle.
+    cycles: Vec<(State, history::Cycle)>,
+    repeated: bool,
+}
+
+fn run(
+    k: &Coupling,
+    n: usize,
+    steps: usize,
+    q_amp: f64,
+    max_cycles: usize,
+    stop: Option<(f64, f64)>,
+) -> Result<Run> {
+    let mut hist = History::new(k, n)?;
+    let h = hist.h();
+    let normal = hist.state().clone();
+    let first = hist.load(q_amp, steps)?;
+    let mut cycles = Vec::new();
+    let mut repeated = false;
+    for _ in 0..max_cycles {
+        let start = hist.state().clone();
+        let mut states = hist.load(-q_amp, 2 * steps)?;
+        states.extend(hist.load(q_amp, 2 * steps)?);
+        let cycle = history::cycle_summary(k, h, &start, states);
+        let end = hist.state();
+        cycles.push((start.clone(), cycle));
+        if let Some((tol, unit)) = stop {
+            let dq: f64 = h * end
+                .q
+                .iter()
+                .zip(&start.q)
+                .map(|(a, b)| (a - b).abs())
+                .sum::<f64>();
+            let du = (end.punch - start.punch).abs() * unit;
+            if dq <= tol && du <= tol {
+                repeated = true;
+                break;
+            }
+        }
+    }
+    Ok(Run {
+        h,
+        nodes: hist.nodes(),
+        normal,
+        first,
+        cycles,
+        repeated,
+    })
+}
+
+/// The surface stress sigma_xx(x, 0) = -delta^2 p - delta sqrt(2 (1 + kappa)) H[q]
+/// (docs/theory.md (F2)) at the midpoints of piecewise-constant p, q on 2n panels:
+/// H[q](x_i) = (1/pi) sum_j q_j ln|(x_i - a_j) / (x_i - b_j)| over the panels [a_j, b_j]
+/// (exact for piecewise-constant q; the panel's own term vanishes at its midpoint).
+struct SurfaceStress {
+    m: usize,
+    hilbert: Vec<f64>,
+    delta: f64,
+    root: f64,
+}
+
+impl SurfaceStress {
+    fn new(contact: &Contact, nodes: &[f64], h: f64) -> Self {
+        let m = nodes.len();
+        let mut hilbert = vec![0.0; m * m];
+        for (i, &x) in nodes.iter().enumerate() {
+            for j in 0..m {
+                if i != j {
+                    let a = -1.0 + j as f64 * h;
+                    hilbert[i * m + j] = ((x - a) / (x - a - h)).abs().ln() / PI;
+                }
+            }
+        }
+        let c = contact.material().constants();
+        Self {
+            m,
+            hilbert,
+            delta: c.delta,
+            root: (2.0 * (1.0 + c.kappa)).sqrt(),
+        }
+    }
+
+    fn sxx(&self, p: &[f64], q: &[f64]) -> Vec<f64> {
+        (0..self.m)
+            .map(|i| {
+                let row = &self.hilbert[i * self.m..(i + 1) * self.m];
+                let hq: f64 = row.iter().zip(q).map(|(a, b)| a * b).sum();
+                -self.delta * self.delta * p[i] - self.delta * self.root * hq
+            })
+            .collect()
+    }
+}
+
+/// A cycle's results on one grid, before the error estimates.
+struct Raw {
+    dissipation: f64,
+    slip_amplitude: Vec<f64>,
+    tau_max: Vec<f64>,
+    sxx_max: Vec<f64>,
+    f1: Vec<f64>,
+    f2: Vec<f64>,
+    f1_peak: (f64, f64),
+    f2_peak: (f64, f64),
+    stick_at_minus: (f64, f64),
+    stick_at_plus: (f64, f64),
+}
+
+fn peak(v: &[f64], nodes: &[f64]) -> (f64, f64) {
+    let mut best = (0.0, f64::NAN);
+    for (x, &f) in nodes.iter().zip(v) {
+        if f > best.0 {
+            best = (f, *x);
+        }
+    }
+    best
+}
+
+fn raw(
+    start: &State,
+    c: &history::Cycle,
+    steps: usize,
+    nodes: &[f64],
+    stress: &SurfaceStress,
+    unit: f64,
+) -> Raw {
+    let m = nodes.len();
+    let mut tau_max: Vec<f64> = start.q.iter().map(|q| q.abs()).collect();
+    let mut sxx_max = stress.sxx(&start.p, &start.q);
+    for s in &c.states {
+        let sxx = stress.sxx(&s.p, &s.q);
+        for i in 0..m {
+            tau_max[i] = tau_max[i].max(s.q[i].abs());
+            sxx_max[i] = sxx_max[i].max(sxx[i]);
+        }
+    }
+    // A node that stuck at every step keeps its relative displacement (T4): its amplitude is
+    // zero, not the rounding of e - D.
+    let slip_amplitude: Vec<f64> = (0..m)
+        .map(|i| {
+            let slipped = c.states.iter().any(|s| s.zones[i] != Zone::Stick);
+            if slipped {
+                c.slip_amplitude[i] * unit
+            } else {
+                0.0
+            }
+        })
+        .collect();
+    let f1: Vec<f64> = (0..m).map(|i| tau_max[i] * slip_amplitude[i]).collect();
+    let f2: Vec<f64> = (0..m).map(|i| sxx_max[i].max(0.0) * f1[i]).collect();
+    let at = |i: usize| c.states.get(i).map_or((f64::NAN, f64::NAN), |s| s.stick);
+    Raw {
+        dissipation: c.dissipation * unit,
+        f1_peak: peak(&f1, nodes),
+        f2_peak: peak(&f2, nodes),
+        slip_amplitude,
+        tau_max,
+        sxx_max,
+        f1,
+        f2,
+        stick_at_minus: at(2 * steps - 1),
+        stick_at_plus: at(4 * steps - 1),
+    }
+}
+
+/// |a - b|, with NaN against NaN as 0 (both runs agree there is nothing) and NaN against a
+/// number as +infinity.
+fn gap(a: f64, b: f64) -> f64 {
+    match (a.is_nan(), b.is_nan()) {
+        (true, true) => 0.0,
+        (false, false) => (a - b).abs(),
+        _ => f64::INFINITY,
+    }
+}
+
+/// The largest gap between node values of a fine profile and a check run's profile, read at
+/// the fine nodes (piecewise constant: a coarse panel covers `ratio` fine ones).
+fn profile_gap(fine: &[f64], check: &[f64], ratio: usize) -> f64 {
+    fine.iter()
+        .enumerate()
+        .map(|(i, f)| gap(*f, check[i / ratio]))
+        .fold(0.0, f64::max)
+}
+
+/// A check run's results per cycle (a failed check run is None: its estimates are infinite).
+struct Check {
+    raws: Vec<Raw>,
+    first: f64,
+    ratio: usize,
+}
+
+impl Fretting {
+    /// Normal load P, then Q/P: 0 -> `q_amp_over_p` in `options.steps` steps, then cycles
+    /// `q_amp_over_p` -> -`q_amp_over_p` -> `q_amp_over_p` (2 `options.steps` steps each half)
+    /// until the state repeats or `options.max_cycles` cycles are done.
+    ///
+    /// Errors: `InvalidArgument` for options out of range, a contact with mu = 0, an
+    /// amplitude that is not finite, <= 0, or >= mu (gross sliding); `NoAdmissibleSolution`
+    /// when the pressure turns negative somewhere on the path (strong coupling at large
+    /// amplitudes: the punch would lift off, which this model does not describe);
+    /// `NoConvergence` when a load step's Newton iteration fails.
+    pub fn solve(contact: &Contact, q_amp_over_p: f64, options: &CycleOptions) -> Result<Self> {
+        options.validate()?;
+        let k = contact.coupling();
+        check_load(q_amp_over_p, k.mu, "amplitude")?;
+        if q_amp_over_p <= 0.0 {
+            return Err(Error::InvalidArgument(format!(
+                "amplitude Q*/P = {q_amp_over_p} must be > 0 (the cycle runs +Q* -> -Q* -> +Q*)"
+            )));
+        }
+        let unit = unit(contact);
+        let (n, s) = (options.panels, options.steps);
+        let tol = options.repeat_tolerance;
+        let fine = run(
+            &k,
+            n,
+            s,
+            q_amp_over_p,
+            options.max_cycles,
+            Some((tol, unit)),
+        )?;
+        let count = fine.cycles.len();
+        let stress = SurfaceStress::new(contact, &fine.nodes, fine.h);
+        let raws: Vec<Raw> = fine
+            .cycles
+            .iter()
+            .map(|(st, c)| raw(st, c, s, &fine.nodes, &stress, unit))
+            .collect();
+        let first_w = fine.first.iter().map(|st| st.dissipation).sum::<f64>() * unit;
+        // The check runs: half the panels, half the steps (each for the same cycles).
+        let checks: Vec<Option<Check>> = [(n / 2, s, 2), (n, s / 2, 1)]
+            .into_iter()
+            .map(|(nc, sc, ratio)| {
+                let r = run(&k, nc, sc, q_amp_over_p, count, None).ok()?;
+                let stress = SurfaceStress::new(contact, &r.nodes, r.h);
+                Some(Check {
+                    raws: r
+                        .cycles
+                        .iter()
+                        .map(|(st, c)| raw(st, c, sc, &r.nodes, &stress, unit))
+                        .collect(),
+                    first: r.first.iter().map(|st| st.dissipation).sum::<f64>() * unit,
+                    ratio,
+                })
+            })
+            .collect();
+        let err = |f: &dyn Fn(&Check) -> f64| -> f64 {
+            SAFETY
+                * checks
+                    .iter()
+                    .map(|c| c.as_ref().map_or(f64::INFINITY, f))
+                    .sum::<f64>()
+        };
+        let first_loading_dissipation = Estimate {
+            value: first_w,
+            error: err(&|c| gap(first_w, c.first)),
+        };
+        let cycles: Vec<CycleResult> = raws
+            .into_iter()
+            .zip(&fine.cycles)
+            .enumerate()
+            .map(|(i, (r, (_, c)))| {
+                let d = r.dissipation;
+                let dissipation = Estimate {
+                    value: d,
+                    error: err(&|ch| gap(d, ch.raws[i].dissipation)),
+                };
+                let slip_amplitude_error =
+                    err(&|ch| profile_gap(&r.slip_amplitude, &ch.raws[i].slip_amplitude, ch.ratio));
+                let peak_of = |pk: (f64, f64), which: fn(&Raw) -> (f64, f64)| Peak {
+                    value: pk.0,
+                    x: pk.1,
+                    error: err(&|ch| gap(pk.0, which(&ch.raws[i]).0)),
+                    x_error: err(&|ch| gap(pk.1, which(&ch.raws[i]).1)),
+                };
+                let stick_error = err(&|ch| {
+                    let o = &ch.raws[i];
+                    [
+                        gap(r.stick_at_minus.0, o.stick_at_minus.0),
+                        gap(r.stick_at_minus.1, o.stick_at_minus.1),
+                        gap(r.stick_at_plus.0, o.stick_at_plus.0),
+                        gap(r.stick_at_plus.1, o.stick_at_plus.1),
+                    ]
+                    .into_iter()
+                    .fold(0.0, f64::max)
+                });
+                CycleResult {
+                    dissipation,
+                    slip_amplitude_error,
+                    f1_peak: peak_of(r.f1_peak, |o| o.f1_peak),
+                    f2_peak: peak_of(r.f2_peak, |o| o.f2_peak),
+                    stick_error,
+                    slip_amplitude: r.slip_amplitude,
+                    loop_points: c.loop_points.iter().map(|&(q, u)| (q, u * unit)).collect(),
+                    loop_work: c.loop_work * unit,
+                    normal_work: c.normal_work * unit,
+                    energy_change: c.energy_change * unit,
+                    balance_residual: c.balance_residual * unit,
+                    tau_max: r.tau_max,
+                    sxx_max: r.sxx_max,
+                    f1: r.f1,
+                    f2: r.f2,
+                    stick_at_minus: r.stick_at_minus,
+                    stick_at_plus: r.stick_at_plus,
+                    path: c
+                        .states
+                        .iter()
+                        .map(|st| PathPoint::from_state(st, unit))
+                        .collect(),
+                }
+            })
+            .collect();
+        let state = match (fine.repeated, cycles.last()) {
+            (true, Some(c)) if c.dissipation.value <= tol => CycleState::Shakedown,
+            (true, _) => CycleState::SteadySlip,
+            (false, _) => CycleState::CycleLimitReached,
+        };
+        Ok(Self {
+            method: options.method,
+            options: *options,
+            q_amp_over_p,
+            h: fine.h,
+            normal_load: PathPoint::from_state(&fine.normal, unit),
+            first_loading: fine
+                .first
+                .iter()
+                .map(|st| PathPoint::from_state(st, unit))
+                .collect(),
+            first_loading_dissipation,
+            nodes: fine.nodes,
+            cycles,
+            state,
+        })
+    }
+
+    /// Whether the last cycle repeats its start state (shakedown or a steady slip cycle).
+    pub fn steady(&self) -> bool {
+        self.state != CycleState::CycleLimitReached
+    }
+
+    /// The value at x (in [-1, 1], units of a) of a profile given at the nodes: the value of
+    /// the panel containing x (x = +-1 belong to the end panels; a panel boundary to the
+    /// panel on its right).
+    ///
+    /// Errors: `InvalidArgument` for x NaN or outside [-1, 1].
+    pub fn at(&self, profile: &[f64], x: f64) -> Result<f64> {
+        panel_value(profile, self.h, x)
+    }
+}
+
+/// The panel value at x of a profile on 2n uniform panels of [-1, 1].
+pub(crate) fn panel_value(profile: &[f64], h: f64, x: f64) -> Result<f64> {
+    if !(-1.0..=1.0).contains(&x) {
+        return Err(Error::InvalidArgument(format!(
+            "x = {x} is not on the contact [-1, 1]"
+        )));
+    }
+    let m = profile.len();
+    let i = (((x + 1.0) / h).floor() as usize).min(m - 1);
+    Ok(profile[i])
+}
+
+/// A load path an FE code scripts: the normal load P, then Q moved monotonically to one value
+/// after another ([`LoadPath::load`]). A second grid with half the panels runs alongside for
+/// the error estimates (first order: their difference estimates the error).
+pub struct LoadPath {
+    fine: History,
+    coarse: Option<History>,
+    steps: usize,
+    unit: f64,
+    dissipated: f64,
+    dissipated_coarse: f64,
+}
+
+impl LoadPath {
+    /// The normal-load state (Q = 0) of `contact` (its material and friction) on
+    /// `options.panels` panels per half-width; each [`LoadPath::load`] takes `options.steps`
+    /// steps.
+    ///
+    /// Errors: `InvalidArgument` for options out of range or mu = 0 (no tangential load can be
+    /// carried; the normal load alone is [`Contact::solve`]); `NoConvergence`.
+    pub fn new(contact: &Contact, options: &CycleOptions) -> Result<Self> {
+        options.validate()?;
+        let k = contact.coupling();
+        check_load(0.0, k.mu, "load")?;
+        let fine = History::new(&k, options.panels)?;
+        let coarse = History::new(&k, options.panels / 2).ok();
+        Ok(Self {
+            fine,
+            coarse,
+            steps: options.steps,
+            unit: unit(contact),
+            dissipated: 0.0,
+            dissipated_coarse: 0.0,
+        })
+    }
+
+    /// Moves Q/P monotonically from its current value to `q_over_p`.
+    ///
+    /// Errors: `InvalidArgument` for q_over_p not finite or |q_over_p| >= mu (gross
+    /// sliding); `NoAdmissibleSolution` (p < 0 somewhere: lift-off) or `NoConvergence`. On
+    /// any error the path is unchanged.
+    pub fn load(&mut self, q_over_p: f64) -> Result<()> {
+        check_load(q_over_p, self.fine.coupling().mu, "load")?;
+        let states = self.fine.load(q_over_p, self.steps)?;
+        self.dissipated += states.iter().map(|s| s.dissipation).sum::<f64>();
+        if let Some(c) = self.coarse.as_mut() {
+            match c.load(q_over_p, self.steps) {
+                Ok(st) => self.dissipated_coarse += st.iter().map(|s| s.dissipation).sum::<f64>(),
+                Err(_) => self.coarse = None,
+            }
+        }
+        Ok(())
+    }
+
+    /// The current state.
+    pub fn point(&self) -> PathPoint {
+        PathPoint::from_state(self.fine.state(), self.unit)
+    }
+
+    /// The current Q/P.
+    pub fn q_over_p(&self) -> f64 {
+        self.fine.state().q_over_p
+    }
+
+    /// The 2n panel midpoints.
+    pub fn nodes(&self) -> Vec<f64> {
+        self.fine.nodes()
+    }
+
+    /// Panel width (units of a).
+    pub fn h(&self) -> f64 {
+        self.fine.h()
+    }
+
+    /// The stick set [c1, c2] of the step that reached the current state, and the estimate
+    /// of the ends' error (the larger, from the half-panel grid).
+    pub fn stick_zone(&self) -> ((f64, f64), f64) {
+        let (c1, c2) = self.fine.state().stick;
+        let err = self.coarse.as_ref().map_or(f64::INFINITY, |c| {
+            let (d1, d2) = c.state().stick;
+            SAFETY * gap(c1, d1).max(gap(c2, d2))
+        });
+        ((c1, c2), err)
+    }
+
+    /// The traction error estimate int (|dp| + |dq|) dx (units of P) against the half-panel
+    /// grid, read at the fine panels.
+    pub fn traction_error(&self) -> f64 {
+        let Some(c) = self.coarse.as_ref() else {
+            return f64::INFINITY;
+        };
+        let (f, g) = (self.fine.state(), c.state());
+        let h = self.fine.h();
+        SAFETY
+            * (0..f.p.len())
+                .map(|i| h * ((f.p[i] - g.p[i / 2]).abs() + (f.q[i] - g.q[i / 2]).abs()))
+                .sum::<f64>()
+    }
+
+    /// Energy dissipated since the normal load (P^2/E), with the estimate of its grid error
+    /// (the load-step error is not included: a path's steps are the caller's choice).
+    pub fn dissipated(&self) -> Estimate {
+        Estimate {
+            value: self.dissipated * self.unit,
+            error: if self.coarse.is_some() {
+                SAFETY * (self.dissipated - self.dissipated_coarse).abs() * self.unit
+            } else {
+                f64::INFINITY
+            },
+        }
+    }
+
+    /// The moment int x p dx the non-rotating punch carries (units of P a).
+    pub fn moment(&self) -> f64 {
+        self.fine.moment()
+    }
+
+    /// The panel value at x in [-1, 1] of a profile at the nodes (see [`Fretting::at`]).
+    pub fn at(&self, profile: &[f64], x: f64) -> Result<f64> {
+        panel_value(profile, self.fine.h(), x)
+    }
+}
+
+#[cfg(test)]
+mod tests;

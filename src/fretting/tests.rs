@@ -1,0 +1,230 @@
+//! Checks of the fretting API against independent facts: the step- and grid-extrapolated
+//! reference values of docs/theory_tangential.md section 7 (separate runs at N = 200 .. 800),
+//! the surface stress of the field module (Lekhnistskii's potentials), the mirror symmetry
+//! Q -> -Q, the energy balance (T9), the three end states, and bad input.
+
+use super::*;
+use crate::lcp::history::History;
+use crate::{Material, Method};
+
+fn ply_contact(mu: f64) -> Contact {
+    let m = Material::plane_stress(181e9, 10.3e9, 7.17e9, 0.28).unwrap();
+    let mut c = Contact::new(m);
+    c.set_friction(mu).unwrap();
+    c
+}
+
+/// The isotropic form bp = bq = b* (delta = kappa = 1, nu = 1 - 2 b*).
+fn isotropic_contact(b_star: f64, mu: f64) -> Contact {
+    let m = Material::effective(1.0, 1.0 - 2.0 * b_star, 1.0, 1.0).unwrap();
+    let mut c = Contact::new(m);
+    c.set_friction(mu).unwrap();
+    c
+}
+
+/// Ply, Q* = 0.6 mu P, default options: the first cycle's dissipation and the stick set at
+/// -Q* lie within their estimates of the references extrapolated in the steps and the panels
+/// (theory_tangential section 8: W1 -> 2.4684e-3 pi B P^2, c1(-Q*) = -0.2636), and the
+/// second cycle has shaken down.
+#[test]
+fn ply_cycle_meets_the_extrapolated_references_within_its_estimates() {
+    let c = ply_contact(0.3);
+    let f = Fretting::solve(&c, 0.18, &CycleOptions::default()).unwrap();
+    let unit = unit(&c);
+    assert!((unit - 1.3718).abs() < 1e-4, "pi B E = {unit}");
+    assert_eq!(f.state, CycleState::Shakedown);
+    assert_eq!(f.cycles.len(), 2);
+    let w1 = f.cycles[0].dissipation;
+    let reference = 2.4684e-3 * unit;
+    assert!(
+        (w1.value - reference).abs() <= w1.error && w1.error < 0.01 * w1.value,
+        "W1 = {w1:?}, reference {reference}"
+    );
+    let (c1, c2) = f.cycles[0].stick_at_minus;
+    let e = f.cycles[0].stick_error;
+    assert!(
+        (c1 + 0.2636).abs() <= e && e < 0.02,
+        "c1 = {c1}, estimate {e}"
+    );
+    assert_eq!(c2, 1.0);
+    let w2 = f.cycles[1].dissipation;
+    assert!(w2.value <= 1e-12 && w2.error <= 1e-12, "W2 = {w2:?}");
+    assert!(f.cycles[1].slip_amplitude.iter().all(|&a| a == 0.0));
+    assert_eq!(f.cycles[1].stick_at_minus, (-1.0, 1.0));
+    for cy in &f.cycles {
+        // (T9) summed over the cycle, in P^2/E
+        assert!(cy.balance_residual.abs() < 1e-15, "{}", cy.balance_residual);
+        assert_eq!(cy.loop_points.len(), 4 * f.options.steps + 1);
+        // Ruiz parameters as defined, and their peaks
+        for i in 0..f.nodes.len() {
+            let f1 = cy.tau_max[i] * cy.slip_amplitude[i];
+            assert_eq!(cy.f1[i], f1);
+            assert_eq!(cy.f2[i], cy.sxx_max[i].max(0.0) * f1);
+        }
+        let top = cy.f1.iter().cloned().fold(0.0, f64::max);
+        assert_eq!(cy.f1_peak.value, top);
+    }
+    // the slip amplitude of the first cycle: largest at the leading edge of the unloading
+    let amp = &f.cycles[0].slip_amplitude;
+    let top = amp.iter().cloned().fold(0.0, f64::max);
+    assert_eq!(amp[0], top);
+    // theory_tangential section 7: 1.485e-2 pi B P at N = 200, 10 steps
+    assert!((top - 1.485e-2 * unit).abs() < 0.05 * top, "{top}");
+}
+
+/// The grid surface stress (F2) at the nodes against the field module's sigma_xx(x, 0) of
+/// the COUPLED normal-load solution (Lekhnistskii's potentials, graded panels): first-order
+/// agreement away from the punch edges and the stick edges.
+#[test]
+fn surface_stress_agrees_with_the_field_module() {
+    let c = ply_contact(0.3);
+    let mut exact = c.clone();
+    exact.set_method(Method::Coupled);
+    let s = exact.solve().unwrap();
+    let edge = s.c();
+    let mut worst = [0.0f64; 2];
+    for (slot, n) in [50, 100].into_iter().enumerate() {
+        let hist = History::new(&c.coupling(), n).unwrap();
+        let nodes = hist.nodes();
+        let stress = SurfaceStress::new(&c, &nodes, hist.h());
+        let st = hist.state();
+        let sxx = stress.sxx(&st.p, &st.q);
+        for (i, &x) in nodes.iter().enumerate() {
+            if x.abs() < 0.8 && (x.abs() - edge).abs() > 0.1 {
+                let reference = s.stresses(x, 0.0).unwrap()[0];
+                worst[slot] = worst[slot].max((sxx[i] - reference).abs());
+            }
+        }
+    }
+    println!("surface sxx, largest difference at n = 50, 100: {worst:?}");
+    assert!(worst[1] < 0.02 && worst[1] < 0.7 * worst[0], "{worst:?}");
+}
+
+/// Q -> -Q mirrors the path: [c1, c2] -> [-c2, -c1], p(x) -> p(-x), q(x) -> -q(-x).
+#[test]
+fn load_path_mirrors_under_q_to_minus_q() {
+    let c = ply_contact(0.3);
+    let opt = CycleOptions {
+        panels: 40,
+        steps: 3,
+        ..CycleOptions::default()
+    };
+    let mut up = LoadPath::new(&c, &opt).unwrap();
+    let mut down = LoadPath::new(&c, &opt).unwrap();
+    up.load(0.15).unwrap();
+    down.load(-0.15).unwrap();
+    let (a, b) = (up.point(), down.point());
+    let m = a.p.len();
+    for i in 0..m {
+        assert!((a.p[i] - b.p[m - 1 - i]).abs() < 1e-10);
+        assert!((a.q[i] + b.q[m - 1 - i]).abs() < 1e-10);
+    }
+    let ((c1, c2), e) = up.stick_zone();
+    let ((d1, d2), _) = down.stick_zone();
+    assert!((c1 + d2).abs() < 1e-10 && (c2 + d1).abs() < 1e-10);
+    assert_eq!(c1, -1.0);
+    assert!(c2 < 0.09 && e.is_finite());
+    assert!((up.moment() + down.moment()).abs() < 1e-12 && up.moment() < 0.0);
+    assert!((a.punch + b.punch).abs() < 1e-12 && a.punch != 0.0);
+    let w = up.dissipated();
+    assert!(w.value > 0.0 && (w.value - down.dissipated().value).abs() < 1e-12 * w.value);
+    // panel lookup
+    assert_eq!(up.at(&a.q, -1.0).unwrap(), a.q[0]);
+    assert_eq!(up.at(&a.q, 1.0).unwrap(), a.q[m - 1]);
+    assert!(up.at(&a.q, 1.5).is_err() && up.at(&a.q, f64::NAN).is_err());
+}
+
+/// The three end states (theory_tangential section 7): b* = 0.5, mu = 0.5, Q* = 0.9 mu P
+/// repeats a slipping cycle; b* = 0.9, mu = 1, Q* = 0.3 mu P still decays after 3 cycles.
+#[test]
+fn steady_slip_and_cycle_limit() {
+    let opt = CycleOptions {
+        panels: 40,
+        steps: 4,
+        max_cycles: 6,
+        ..CycleOptions::default()
+    };
+    let f = Fretting::solve(&isotropic_contact(0.5, 0.5), 0.45, &opt).unwrap();
+    assert_eq!(f.state, CycleState::SteadySlip, "{:?}", f.cycles.len());
+    let n = f.cycles.len();
+    assert!((2..6).contains(&n));
+    // the cycle after the repeating one dissipates the same
+    let more = Fretting::solve(
+        &isotropic_contact(0.5, 0.5),
+        0.45,
+        &CycleOptions {
+            max_cycles: n + 1,
+            repeat_tolerance: 1e-300,
+            ..opt
+        },
+    )
+    .unwrap();
+    let (a, b) = (f.cycles[n - 1].dissipation, more.cycles[n].dissipation);
+    assert!(
+        a.value > 1e-3 && (a.value - b.value).abs() < 1e-8,
+        "{a:?} {b:?}"
+    );
+    let g = Fretting::solve(
+        &isotropic_contact(0.9, 1.0),
+        0.3,
+        &CycleOptions {
+            max_cycles: 3,
+            ..opt
+        },
+    )
+    .unwrap();
+    assert_eq!(g.state, CycleState::CycleLimitReached);
+    assert!(!g.steady());
+    let w: Vec<f64> = g.cycles.iter().map(|c| c.dissipation.value).collect();
+    assert!(w[0] > w[1] && w[1] > w[2] && w[2] > 1e-4, "{w:?}");
+}
+
+#[test]
+fn bad_input_is_refused() {
+    let c = ply_contact(0.3);
+    let opt = CycleOptions {
+        panels: 8,
+        steps: 2,
+        max_cycles: 1,
+        ..CycleOptions::default()
+    };
+    for amp in [f64::NAN, f64::INFINITY, -0.1, 0.0, 0.3, 0.31] {
+        assert!(
+            matches!(
+                Fretting::solve(&c, amp, &opt),
+                Err(Error::InvalidArgument(_))
+            ),
+            "{amp}"
+        );
+    }
+    assert!(Fretting::solve(&ply_contact(0.0), 0.1, &opt).is_err());
+    assert!(LoadPath::new(&ply_contact(0.0), &opt).is_err());
+    for bad in [
+        CycleOptions { panels: 7, ..opt },
+        CycleOptions { steps: 1, ..opt },
+        CycleOptions {
+            max_cycles: 0,
+            ..opt
+        },
+        CycleOptions {
+            repeat_tolerance: f64::NAN,
+            ..opt
+        },
+        CycleOptions {
+            repeat_tolerance: 0.0,
+            ..opt
+        },
+    ] {
+        assert!(Fretting::solve(&c, 0.1, &bad).is_err());
+    }
+    let mut path = LoadPath::new(&c, &opt).unwrap();
+    path.load(0.1).unwrap();
+    let before = path.point();
+    for bad in [0.3, -0.3, f64::NAN, f64::NEG_INFINITY] {
+        assert!(path.load(bad).is_err());
+    }
+    assert_eq!(path.point().q, before.q);
+    assert_eq!(path.q_over_p(), 0.1);
+    assert_eq!(CycleMethod::from_code(0), Some(CycleMethod::LcpHistory));
+    assert_eq!(CycleMethod::from_code(1), None);
+}
