@@ -10,8 +10,9 @@
  * - The stick zone is |x| < c, the slip zones c < |x| < 1.
  *
  * Ownership and errors
- * - Handles (material, contact, solution) are created by *_new / orthoslip_contact_solve
- *   into a `T **out` parameter and released by the matching *_free (NULL is a no-op).
+ * - Handles (material, contact, solution; cycle options, history, cycles) are created by
+ *   *_new / orthoslip_contact_solve / orthoslip_contact_solve_cycles into a `T **out`
+ *   parameter and released by the matching *_free (NULL is a no-op).
  * - Every fallible function returns an orthoslip_status. Out-parameters are written only on
  *   ORTHOSLIP_OK; a handle out-parameter is set to NULL on every failure. A failure stores a
  *   message retrievable with orthoslip_last_error_message on the same thread.
@@ -22,8 +23,12 @@
  * - There is no global mutable state: the last-error message is kept per thread, and the
  *   only data shared between threads are immutable tables (quadrature nodes) built once on
  *   first use. Materials and solutions are immutable and may be used from many threads at
- *   once; orthoslip_contact_solve may run on one contact from many threads at once; setters
- *   and *_free need exclusive access to their handle.
+ *   once; orthoslip_contact_solve may run on one contact from many threads at once; setters,
+ *   orthoslip_history_load and *_free need exclusive access to their handle.
+ *
+ * Tangential load and fretting (docs/fretting.md): displacements and slip amplitudes are
+ * per P/E, energies per unit thickness in P^2/E (E: the effective modulus); Q/P is the
+ * tangential load per normal load.
  */
 
 #ifndef ORTHOSLIP_H
@@ -108,12 +113,64 @@ typedef enum {
 } orthoslip_method;
 
 /**
+ * How a load path or a cycle is solved (append-only: new methods get new values).
+ */
+typedef enum {
+  /**
+   * The paper's grid LCP with a loading history: 2n uniform panels on the contact, one
+   * complementarity problem per load step; first order in the panel width and the load
+   * step (docs/theory_tangential.md).
+   */
+  ORTHOSLIP_CYCLE_METHOD_LCP_HISTORY = 0,
+} orthoslip_cycle_method;
+
+/**
+ * How a fretting run ended.
+ */
+typedef enum {
+  /**
+   * The last cycle ends in the state it started from and dissipates nothing (to the
+   * repeat tolerance): every later cycle is elastic.
+   */
+  ORTHOSLIP_CYCLE_SHAKEDOWN = 0,
+  /**
+   * The last cycle ends in the state it started from and dissipates energy: every later
+   * cycle is the same.
+   */
+  ORTHOSLIP_CYCLE_STEADY_SLIP = 1,
+  /**
+   * No cycle up to the limit repeated its start state.
+   */
+  ORTHOSLIP_CYCLE_LIMIT_REACHED = 2,
+} orthoslip_cycle_state;
+
+/**
  * A contact scene (opaque): a copy of the material plus friction coefficient, method and
  * tolerance. `orthoslip_contact_solve` may be called on the same contact from many threads
  * at once; the setters and `orthoslip_contact_free` must not run concurrently with any other
  * use of that contact.
  */
 typedef struct orthoslip_contact orthoslip_contact;
+
+/**
+ * Options of a load path or a fretting run (opaque): method, panels, load steps, repeat
+ * tolerance. Immutable once made except through its setters, which need exclusive access.
+ */
+typedef struct orthoslip_cycle_options orthoslip_cycle_options;
+
+/**
+ * A fretting run (opaque, immutable): the first loading 0 -> Q* and the cycles
+ * Q* -> -Q* -> Q*. May be queried from many threads at once.
+ */
+typedef struct orthoslip_cycles orthoslip_cycles;
+
+/**
+ * A load path (opaque): the normal load P, then the tangential load Q moved monotonically
+ * from one value to the next by `orthoslip_history_load`. A grid with half the panels runs
+ * alongside for the error estimates. The getters may run from many threads at once;
+ * `orthoslip_history_load` and `orthoslip_history_free` need exclusive access.
+ */
+typedef struct orthoslip_history orthoslip_history;
 
 /**
  * An orthotropic elastic half-plane (opaque). Immutable after construction: may be shared
@@ -507,6 +564,535 @@ orthoslip_status orthoslip_solution_slip(const orthoslip_solution *s,
                                          const double *x,
                                          size_t n,
                                          double *slip);
+
+/**
+ * Creates cycle options with the defaults: ORTHOSLIP_CYCLE_METHOD_LCP_HISTORY, 100 panels
+ * per half-width, 10 load steps per quarter cycle, repeat tolerance 1e-8.
+ *
+ * On success `*out` owns a new handle, to be released with `orthoslip_cycle_options_free`.
+ * Returns ORTHOSLIP_OK or ORTHOSLIP_ERROR_NULL_POINTER; on failure `*out` is set to NULL.
+ *
+ * # Safety
+ * `out` must be NULL or valid for writing one pointer.
+ */
+orthoslip_status orthoslip_cycle_options_new(orthoslip_cycle_options **out);
+
+/**
+ * Releases cycle options. NULL is a no-op.
+ *
+ * # Safety
+ * `o` must be NULL or a handle from `orthoslip_cycle_options_new`, not yet freed.
+ */
+void orthoslip_cycle_options_free(orthoslip_cycle_options *o);
+
+/**
+ * Sets the method (default ORTHOSLIP_CYCLE_METHOD_LCP_HISTORY).
+ *
+ * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER or ORTHOSLIP_ERROR_INVALID_ARGUMENT
+ * (a value outside `orthoslip_cycle_method`; the options are then unchanged).
+ *
+ * # Safety
+ * `o` must be NULL or live options not used by another thread during the call.
+ */
+orthoslip_status orthoslip_cycle_options_set_method(orthoslip_cycle_options *o,
+                                                    orthoslip_cycle_method method);
+
+/**
+ * Sets the panels per half-width n of ORTHOSLIP_CYCLE_METHOD_LCP_HISTORY (2n on the
+ * contact; 8 ..= 2000, default 100). The error estimates come from a second grid with n/2
+ * panels; the cost grows like n^3.
+ *
+ * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER or ORTHOSLIP_ERROR_INVALID_ARGUMENT
+ * (out of range; the options are then unchanged).
+ *
+ * # Safety
+ * `o` must be NULL or live options not used by another thread during the call.
+ */
+orthoslip_status orthoslip_cycle_options_set_panels(orthoslip_cycle_options *o, size_t panels);
+
+/**
+ * Sets the load steps per quarter cycle (2 ..= 10000, default 10): the first loading
+ * 0 -> Q* takes this many, each half cycle twice as many, each `orthoslip_history_load`
+ * this many. The dissipation is first order in the step; its error estimate comes from a
+ * run with half the steps.
+ *
+ * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER or ORTHOSLIP_ERROR_INVALID_ARGUMENT
+ * (out of range; the options are then unchanged).
+ *
+ * # Safety
+ * `o` must be NULL or live options not used by another thread during the call.
+ */
+orthoslip_status orthoslip_cycle_options_set_steps(orthoslip_cycle_options *o, size_t steps);
+
+/**
+ * Sets the repeat tolerance (finite, > 0; default 1e-8): a cycle repeats when its end state
+ * differs from its start state by at most this in int |q_end - q_start| dx (units of P) and
+ * in the punch displacement (units of P/E); a repeating cycle that dissipates at most this
+ * (P^2/E) is shakedown, else a steady slip cycle.
+ *
+ * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER or ORTHOSLIP_ERROR_INVALID_ARGUMENT
+ * (the options are then unchanged).
+ *
+ * # Safety
+ * `o` must be NULL or live options not used by another thread during the call.
+ */
+orthoslip_status orthoslip_cycle_options_set_repeat_tolerance(orthoslip_cycle_options *o,
+                                                              double tol);
+
+/**
+ * The stick set [c1, c2] of a normal-load solution: c1 = -c, c2 = c.
+ *
+ * Returns ORTHOSLIP_OK or ORTHOSLIP_ERROR_NULL_POINTER (nothing written).
+ *
+ * # Safety
+ * `s` must be NULL or a live solution; `c1`, `c2` NULL or valid for one write each.
+ */
+orthoslip_status orthoslip_solution_stick_zone(const orthoslip_solution *s, double *c1, double *c2);
+
+/**
+ * The normal-load state (Q = 0) of contact `k` (its material and friction; its method and
+ * tolerances are not used: the path is solved by the default cycle options,
+ * ORTHOSLIP_CYCLE_METHOD_LCP_HISTORY with 100 panels per half-width and 10 steps per load).
+ *
+ * On success `*out` owns a new handle, to be released with `orthoslip_history_free`.
+ * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER, ORTHOSLIP_ERROR_INVALID_ARGUMENT
+ * (friction mu = 0: no tangential load can be carried) or ORTHOSLIP_ERROR_NO_CONVERGENCE;
+ * on failure `*out` is set to NULL.
+ *
+ * # Safety
+ * `k` must be NULL or a live contact; `out` NULL or valid for writing one pointer.
+ */
+orthoslip_status orthoslip_history_new(const orthoslip_contact *k, orthoslip_history **out);
+
+/**
+ * As `orthoslip_history_new`, with options `o` (they are copied; `o` may be freed after).
+ *
+ * # Safety
+ * `k` and `o` must be NULL or live handles; `out` NULL or valid for writing one pointer.
+ */
+orthoslip_status orthoslip_history_new_with_options(const orthoslip_contact *k,
+                                                    const orthoslip_cycle_options *o,
+                                                    orthoslip_history **out);
+
+/**
+ * Releases a load path. NULL is a no-op.
+ *
+ * # Safety
+ * `h` must be NULL or a handle from `orthoslip_history_new*`, not yet freed.
+ */
+void orthoslip_history_free(orthoslip_history *h);
+
+/**
+ * Q moves monotonically from its current value to q_over_p * P (in the options' number of
+ * steps).
+ *
+ * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER, ORTHOSLIP_ERROR_INVALID_ARGUMENT
+ * (q_over_p NaN or infinite, or |q_over_p| >= mu: gross sliding, refused),
+ * ORTHOSLIP_ERROR_NO_ADMISSIBLE_SOLUTION (the pressure turns negative somewhere: the punch
+ * would lift off, outside this model) or ORTHOSLIP_ERROR_NO_CONVERGENCE. On failure the
+ * history is unchanged.
+ *
+ * # Safety
+ * `h` must be NULL or a live history not used by another thread during the call.
+ */
+orthoslip_status orthoslip_history_load(orthoslip_history *h, double q_over_p);
+
+/**
+ * Writes the current state: Q/P, the punch's tangential displacement u (per P/E, in a fixed
+ * gauge: differences along the path are meaningful) and the moment the non-rotating punch
+ * carries, int x p dx (per P a).
+ *
+ * Returns ORTHOSLIP_OK or ORTHOSLIP_ERROR_NULL_POINTER (nothing written).
+ *
+ * # Safety
+ * `h` must be NULL or a live history; the outputs NULL or valid for one write each.
+ */
+orthoslip_status orthoslip_history_state(const orthoslip_history *h,
+                                         double *q_over_p,
+                                         double *u,
+                                         double *moment);
+
+/**
+ * Writes the stick set [c1, c2] of the step that reached the current state (c1 = -1 or
+ * c2 = 1 when it reaches a punch edge; NaN when nothing sticks) and the estimate of the
+ * ends' error (from the half-panel grid; +INFINITY if that grid failed).
+ *
+ * Returns ORTHOSLIP_OK or ORTHOSLIP_ERROR_NULL_POINTER (nothing written).
+ *
+ * # Safety
+ * `h` must be NULL or a live history; the outputs NULL or valid for one write each.
+ */
+orthoslip_status orthoslip_history_stick_zone(const orthoslip_history *h,
+                                              double *c1,
+                                              double *c2,
+                                              double *err);
+
+/**
+ * Evaluates the current state at n points x[i] in [-1, 1]: p and q (per P/a; panel values,
+ * piecewise constant) and the zone of the step that reached it: 0 stick, +1 the solid
+ * slipped in +x relative to the punch (q = -mu p), -1 in -x (q = +mu p). `x` may alias `p`
+ * or `q`.
+ *
+ * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER (any pointer NULL, also when n = 0) or
+ * ORTHOSLIP_ERROR_INVALID_ARGUMENT (some x[i] NaN or outside [-1, 1]; nothing written).
+ *
+ * # Safety
+ * `h` must be NULL or a live history; `x` NULL or valid for n reads; the outputs NULL or
+ * valid for n writes each.
+ */
+orthoslip_status orthoslip_history_tractions(const orthoslip_history *h,
+                                             const double *x,
+                                             size_t n,
+                                             double *p,
+                                             double *q,
+                                             int *zone);
+
+/**
+ * Writes the energy dissipated since the normal load (per unit thickness, P^2/E) and the
+ * estimate of its grid error (the load-step error, first order, is not included).
+ *
+ * Returns ORTHOSLIP_OK or ORTHOSLIP_ERROR_NULL_POINTER (nothing written).
+ *
+ * # Safety
+ * `h` must be NULL or a live history; the outputs NULL or valid for one write each.
+ */
+orthoslip_status orthoslip_history_dissipated_energy(const orthoslip_history *h,
+                                                     double *w,
+                                                     double *err);
+
+/**
+ * Writes the estimate of the current tractions' error, int (|dp| + |dq|) dx in units of P
+ * (against the half-panel grid).
+ *
+ * Returns ORTHOSLIP_OK or ORTHOSLIP_ERROR_NULL_POINTER (nothing written).
+ *
+ * # Safety
+ * `h` must be NULL or a live history; `err` NULL or valid for one write.
+ */
+orthoslip_status orthoslip_history_traction_error_estimate(const orthoslip_history *h, double *err);
+
+/**
+ * Q cycled +q_amp P -> -q_amp P -> +q_amp P after the normal load and the first loading
+ * 0 -> q_amp P, until a cycle ends in the state it started from or max_cycles cycles are
+ * done, with the default cycle options (ORTHOSLIP_CYCLE_METHOD_LCP_HISTORY, 100 panels per
+ * half-width, 10 steps per quarter cycle, repeat tolerance 1e-8). Uses k's material and
+ * friction (not its method and tolerances).
+ *
+ * On success `*out` owns a new handle, to be released with `orthoslip_cycles_free`.
+ * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER, ORTHOSLIP_ERROR_INVALID_ARGUMENT
+ * (q_amp not finite or <= 0; q_amp >= mu: gross sliding, refused; mu = 0; max_cycles 0
+ * or > 10000), ORTHOSLIP_ERROR_NO_ADMISSIBLE_SOLUTION (the pressure turns negative on the
+ * path: lift-off, outside this model) or ORTHOSLIP_ERROR_NO_CONVERGENCE; on failure `*out`
+ * is set to NULL.
+ *
+ * # Safety
+ * `k` must be NULL or a live contact; `out` NULL or valid for writing one pointer.
+ */
+orthoslip_status orthoslip_contact_solve_cycles(const orthoslip_contact *k,
+                                                double q_amp_over_p,
+                                                size_t max_cycles,
+                                                orthoslip_cycles **out);
+
+/**
+ * As `orthoslip_contact_solve_cycles`, with options `o`.
+ *
+ * # Safety
+ * `k` and `o` must be NULL or live handles; `out` NULL or valid for writing one pointer.
+ */
+orthoslip_status orthoslip_contact_solve_cycles_with_options(const orthoslip_contact *k,
+                                                             const orthoslip_cycle_options *o,
+                                                             double q_amp_over_p,
+                                                             size_t max_cycles,
+                                                             orthoslip_cycles **out);
+
+/**
+ * Releases a fretting run. NULL is a no-op.
+ *
+ * # Safety
+ * `cy` must be NULL or a handle from `orthoslip_contact_solve_cycles*`, not yet freed.
+ */
+void orthoslip_cycles_free(orthoslip_cycles *cy);
+
+/**
+ * Writes the number of cycles computed and whether the last one ends in the state it
+ * started from (1: shakedown or a steady slip cycle; 0: the cycle limit was reached).
+ *
+ * Returns ORTHOSLIP_OK or ORTHOSLIP_ERROR_NULL_POINTER (nothing written).
+ *
+ * # Safety
+ * `cy` must be NULL or a live handle; `n`, `steady` NULL or valid for one write each.
+ */
+orthoslip_status orthoslip_cycles_count(const orthoslip_cycles *cy, size_t *n, int *steady);
+
+/**
+ * Writes the method that computed the run.
+ *
+ * Returns ORTHOSLIP_OK or ORTHOSLIP_ERROR_NULL_POINTER (nothing written).
+ *
+ * # Safety
+ * `cy` must be NULL or a live handle; `used` NULL or valid for one write.
+ */
+orthoslip_status orthoslip_cycles_method(const orthoslip_cycles *cy, orthoslip_cycle_method *used);
+
+/**
+ * Writes how the run ended: shakedown, a steady slip cycle, or the cycle limit.
+ *
+ * Returns ORTHOSLIP_OK or ORTHOSLIP_ERROR_NULL_POINTER (nothing written).
+ *
+ * # Safety
+ * `cy` must be NULL or a live handle; `state` NULL or valid for one write.
+ */
+orthoslip_status orthoslip_cycles_state(const orthoslip_cycles *cy, orthoslip_cycle_state *state);
+
+/**
+ * Writes the energy dissipated in cycle `cycle` (0-based), int mu p |slip increment| dx
+ * summed over its steps, per unit thickness in P^2/E (docs/theory_tangential.md (T8)).
+ *
+ * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER or ORTHOSLIP_ERROR_INVALID_ARGUMENT
+ * (cycle >= count); nothing written on failure.
+ *
+ * # Safety
+ * `cy` must be NULL or a live handle; `w` NULL or valid for one write.
+ */
+orthoslip_status orthoslip_cycles_dissipated_energy(const orthoslip_cycles *cy,
+                                                    size_t cycle,
+                                                    double *w);
+
+/**
+ * Writes the estimate of the error of `orthoslip_cycles_dissipated_energy` (P^2/E): twice
+ * the sum of the differences from a run with half the panels and one with half the steps.
+ *
+ * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER or ORTHOSLIP_ERROR_INVALID_ARGUMENT
+ * (cycle >= count); nothing written on failure.
+ *
+ * # Safety
+ * `cy` must be NULL or a live handle; `err` NULL or valid for one write.
+ */
+orthoslip_status orthoslip_cycles_dissipated_energy_error(const orthoslip_cycles *cy,
+                                                          size_t cycle,
+                                                          double *err);
+
+/**
+ * Writes the energy dissipated in the first loading 0 -> Q* (P^2/E) and its error estimate.
+ *
+ * Returns ORTHOSLIP_OK or ORTHOSLIP_ERROR_NULL_POINTER (nothing written).
+ *
+ * # Safety
+ * `cy` must be NULL or a live handle; `w`, `err` NULL or valid for one write each.
+ */
+orthoslip_status orthoslip_cycles_first_loading_energy(const orthoslip_cycles *cy,
+                                                       double *w,
+                                                       double *err);
+
+/**
+ * Evaluates the slip amplitude of cycle `cycle` at n points x[i] in [-1, 1]: half the
+ * peak-to-peak relative tangential displacement of solid and punch over the cycle, per P/E
+ * (panel values; 0 where the panel stuck throughout the cycle). `x` may alias `amp`.
+ *
+ * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER (any pointer NULL, also when n = 0) or
+ * ORTHOSLIP_ERROR_INVALID_ARGUMENT (cycle >= count, some x[i] NaN or outside [-1, 1]);
+ * nothing written on failure.
+ *
+ * # Safety
+ * `cy` must be NULL or a live handle; `x` NULL or valid for n reads; `amp` NULL or valid
+ * for n writes.
+ */
+orthoslip_status orthoslip_cycles_slip_amplitude(const orthoslip_cycles *cy,
+                                                 size_t cycle,
+                                                 const double *x,
+                                                 size_t n,
+                                                 double *amp);
+
+/**
+ * Writes the error estimate of the slip amplitude of cycle `cycle`: the largest over the
+ * panels (P/E).
+ *
+ * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER or ORTHOSLIP_ERROR_INVALID_ARGUMENT
+ * (cycle >= count); nothing written on failure.
+ *
+ * # Safety
+ * `cy` must be NULL or a live handle; `err` NULL or valid for one write.
+ */
+orthoslip_status orthoslip_cycles_slip_amplitude_error(const orthoslip_cycles *cy,
+                                                       size_t cycle,
+                                                       double *err);
+
+/**
+ * Evaluates Ruiz's fretting parameters of cycle `cycle` at n points x[i] in [-1, 1]:
+ * F1 = tau_max * delta (P^2/(a E)) and F2 = max(sigma_xx,max, 0) * tau_max * delta
+ * (P^3/(a^2 E)), with tau_max the largest |q| over the cycle (P/a), sigma_xx,max the
+ * largest surface sigma_xx(x, 0) over the cycle (P/a, tension positive) and delta the slip
+ * amplitude (P/E); panel values. `x` may alias `f1` or `f2`.
+ *
+ * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER (any pointer NULL, also when n = 0) or
+ * ORTHOSLIP_ERROR_INVALID_ARGUMENT (cycle >= count, some x[i] NaN or outside [-1, 1]);
+ * nothing written on failure.
+ *
+ * # Safety
+ * `cy` must be NULL or a live handle; `x` NULL or valid for n reads; `f1`, `f2` NULL or
+ * valid for n writes each.
+ */
+orthoslip_status orthoslip_cycles_ruiz(const orthoslip_cycles *cy,
+                                       size_t cycle,
+                                       const double *x,
+                                       size_t n,
+                                       double *f1,
+                                       double *f2);
+
+/**
+ * Evaluates tau_max (the largest |q| over the cycle, P/a) and sigma_xx,max (the largest
+ * surface sigma_xx(x, 0) over the cycle, P/a, tension positive) of cycle `cycle` at n
+ * points x[i] in [-1, 1] (panel values), the factors of `orthoslip_cycles_ruiz`.
+ *
+ * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER (any pointer NULL, also when n = 0) or
+ * ORTHOSLIP_ERROR_INVALID_ARGUMENT (cycle >= count, some x[i] NaN or outside [-1, 1]);
+ * nothing written on failure.
+ *
+ * # Safety
+ * `cy` must be NULL or a live handle; `x` NULL or valid for n reads; `tau_max`, `sxx_max`
+ * NULL or valid for n writes each.
+ */
+orthoslip_status orthoslip_cycles_stress_peaks(const orthoslip_cycles *cy,
+                                               size_t cycle,
+                                               const double *x,
+                                               size_t n,
+                                               double *tau_max,
+                                               double *sxx_max);
+
+/**
+ * Writes the peaks of F1 and F2 along the contact in cycle `cycle` and where they are (a
+ * panel midpoint; NaN where the parameter vanishes everywhere, e.g. a cycle without slip),
+ * with the error estimates of the four values (P^2/(a E), P^3/(a^2 E), a). At a slipping
+ * punch edge tau_max grows like the edge singularity as the panels shrink: read the
+ * estimate before the peak.
+ *
+ * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER or ORTHOSLIP_ERROR_INVALID_ARGUMENT
+ * (cycle >= count); nothing written on failure.
+ *
+ * # Safety
+ * `cy` must be NULL or a live handle; `f1_max`, `x_f1`, `f2_max`, `x_f2` NULL or valid for
+ * one write each; `err` NULL or valid for 4 writes (F1, its x, F2, its x).
+ */
+orthoslip_status orthoslip_cycles_ruiz_peaks(const orthoslip_cycles *cy,
+                                             size_t cycle,
+                                             double *f1_max,
+                                             double *x_f1,
+                                             double *f2_max,
+                                             double *x_f2,
+                                             double *err);
+
+/**
+ * Writes the stick sets of cycle `cycle` at Q = -Q* (its middle) and Q = +Q* (its end),
+ * [c1, c2] each (+-1 at a punch edge; NaN when nothing sticks), and the estimate of the
+ * four ends' error (the largest).
+ *
+ * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER or ORTHOSLIP_ERROR_INVALID_ARGUMENT
+ * (cycle >= count); nothing written on failure.
+ *
+ * # Safety
+ * `cy` must be NULL or a live handle; the outputs NULL or valid for one write each.
+ */
+orthoslip_status orthoslip_cycles_stick_zones(const orthoslip_cycles *cy,
+                                              size_t cycle,
+                                              double *c1_minus,
+                                              double *c2_minus,
+                                              double *c1_plus,
+                                              double *c2_plus,
+                                              double *err);
+
+/**
+ * Writes the number of points of cycle `cycle`'s Q-displacement loop: its start and the
+ * state after each load step (4 * steps + 1).
+ *
+ * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER or ORTHOSLIP_ERROR_INVALID_ARGUMENT
+ * (cycle >= count); nothing written on failure.
+ *
+ * # Safety
+ * `cy` must be NULL or a live handle; `len` NULL or valid for one write.
+ */
+orthoslip_status orthoslip_cycles_loop_length(const orthoslip_cycles *cy,
+                                              size_t cycle,
+                                              size_t *len);
+
+/**
+ * Writes cycle `cycle`'s Q-displacement loop: Q/P and the punch's tangential displacement
+ * u (per P/E, fixed gauge) at its start and after each step; `len` must equal
+ * `orthoslip_cycles_loop_length`. The loop's area (trapezoidal) is the work of Q over the
+ * cycle (see `orthoslip_cycles_energy_balance`).
+ *
+ * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER or ORTHOSLIP_ERROR_INVALID_ARGUMENT
+ * (cycle >= count, len not the loop length); nothing written on failure.
+ *
+ * # Safety
+ * `cy` must be NULL or a live handle; `q_over_p` and `u` NULL or valid for len writes each.
+ */
+orthoslip_status orthoslip_cycles_loop(const orthoslip_cycles *cy,
+                                       size_t cycle,
+                                       size_t len,
+                                       double *q_over_p,
+                                       double *u);
+
+/**
+ * Writes cycle `cycle`'s energy balance (P^2/E per unit thickness; docs/theory_tangential.md
+ * (T9)): the work of Q (the loop's area), the work of P through the normal displacement
+ * (p changes with Q when bp > 0), the change of the elastic energy, and the residual
+ * loop + normal - (dissipation with mid-step tractions + change), zero up to rounding (NaN
+ * when bp = 0, where the operator is not symmetric). When a cycle ends where it started the
+ * loop's area is its dissipation.
+ *
+ * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER or ORTHOSLIP_ERROR_INVALID_ARGUMENT
+ * (cycle >= count); nothing written on failure.
+ *
+ * # Safety
+ * `cy` must be NULL or a live handle; the outputs NULL or valid for one write each.
+ */
+orthoslip_status orthoslip_cycles_energy_balance(const orthoslip_cycles *cy,
+                                                 size_t cycle,
+                                                 double *loop_work,
+                                                 double *normal_work,
+                                                 double *energy_change,
+                                                 double *residual);
+
+/**
+ * Writes Q/P, the punch displacement u (P/E) and the stick set [c1, c2] after step `step`
+ * (0-based; a cycle has loop length - 1 steps, the first half unloading to -Q*) of cycle
+ * `cycle`.
+ *
+ * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER or ORTHOSLIP_ERROR_INVALID_ARGUMENT
+ * (cycle or step out of range); nothing written on failure.
+ *
+ * # Safety
+ * `cy` must be NULL or a live handle; the outputs NULL or valid for one write each.
+ */
+orthoslip_status orthoslip_cycles_step(const orthoslip_cycles *cy,
+                                       size_t cycle,
+                                       size_t step,
+                                       double *q_over_p,
+                                       double *u,
+                                       double *c1,
+                                       double *c2);
+
+/**
+ * Evaluates the state after step `step` of cycle `cycle` at n points x[i] in [-1, 1]: p, q
+ * (P/a) and the zone of the step (0 stick, +1 the solid slipped in +x relative to the punch,
+ * -1 in -x), as `orthoslip_history_tractions`.
+ *
+ * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER (any pointer NULL, also when n = 0) or
+ * ORTHOSLIP_ERROR_INVALID_ARGUMENT (cycle or step out of range, some x[i] NaN or outside
+ * [-1, 1]); nothing written on failure.
+ *
+ * # Safety
+ * `cy` must be NULL or a live handle; `x` NULL or valid for n reads; the outputs NULL or
+ * valid for n writes each.
+ */
+orthoslip_status orthoslip_cycles_step_tractions(const orthoslip_cycles *cy,
+                                                 size_t cycle,
+                                                 size_t step,
+                                                 const double *x,
+                                                 size_t n,
+                                                 double *p,
+                                                 double *q,
+                                                 int *zone);
 
 #ifdef __cplusplus
 }  // extern "C"

@@ -238,6 +238,11 @@ fn field_errors() {
 }
 
 #[test]
+fn fretting() {
+    check_program("fretting");
+}
+
+#[test]
 fn traction_tolerance() {
     check_program("traction_tolerance");
 }

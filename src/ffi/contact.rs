@@ -12,7 +12,7 @@ use crate::error::Error;
 /// at once; the setters and `orthoslip_contact_free` must not run concurrently with any other
 /// use of that contact.
 pub struct orthoslip_contact {
-    inner: Contact,
+    pub(crate) inner: Contact,
 }
 
 /// Creates a contact on a copy of material `m`, with friction mu = 0, method

@@ -17,6 +17,8 @@ mod material;
 mod solution;
 // after `solution`: its functions come last in the header (the ABI is append-only)
 mod field;
+// after `field`: the load path and fretting cycles (issue 27)
+mod fretting;
 
 use std::any::Any;
 use std::cell::RefCell;

@@ -329,7 +329,12 @@ impl History {
         let mut states = Vec::with_capacity(steps);
         let mut current = self.state.clone();
         for s in 1..=steps {
-            let target = q0 + (q_over_p - q0) * s as f64 / steps as f64;
+            // (the last step reaches the target exactly, not up to rounding)
+            let target = if s == steps {
+                q_over_p
+            } else {
+                q0 + (q_over_p - q0) * s as f64 / steps as f64
+            };
             let next = self.step(&current, target, &current.q)?;
             states.push(next.clone());
             current = next;
