@@ -732,3 +732,137 @@ fn readme_command_line_snippets_run() {
     assert_eq!(rows.len(), 1 + 9, "{csv}");
     assert!(rows[1..].iter().all(|r| r.ends_with(",ok")), "{csv}");
 }
+
+/// `orthoslip fretting` prints the library's fretting run to the last bit (JSON: the table as
+/// columns, NaN positions as null), the same with the amplitude given relative to mu, and
+/// the profiles of one cycle with --profile; bad amplitudes and cycles exit 2, lift-off 1.
+#[test]
+fn fretting_prints_the_librarys_run_exactly() {
+    use orthoslip::fretting::{CycleOptions, Fretting};
+    let common = [
+        "--mu", "0.3", "--panels", "16", "--steps", "2", "--format", "json",
+    ];
+    let absolute =
+        orthoslip(&[&on_ply("fretting", &["--amplitude", "0.18"])[..], &common].concat());
+    assert_eq!(absolute.status, 0, "{}", absolute.stderr);
+    let relative = orthoslip(
+        &[
+            &on_ply("fretting", &["--relative-amplitude", "0.6"])[..],
+            &common,
+        ]
+        .concat(),
+    );
+    assert_eq!(relative.status, 0, "{}", relative.stderr);
+    let mut contact = Contact::new(ply());
+    contact.set_friction(0.3).unwrap();
+    let options = CycleOptions {
+        panels: 16,
+        steps: 2,
+        ..CycleOptions::default()
+    };
+    for (run, q_amp) in [(&absolute, 0.18), (&relative, 0.6 * 0.3)] {
+        let lib = Fretting::solve(&contact, q_amp, &options).unwrap();
+        let v = json(&run.stdout);
+        assert_eq!(v["state"], "shakedown");
+        assert_eq!(v["cycle_count"].as_f64(), Some(lib.cycles.len() as f64));
+        assert_eq!(v["q_amp_over_p"].as_f64(), Some(q_amp));
+        let table = &v["cycles"];
+        let column = |key: &str| floats(&table[key]);
+        let energy: Vec<f64> = lib.cycles.iter().map(|c| c.dissipation.value).collect();
+        assert_eq!(column("energy"), energy);
+        let error: Vec<f64> = lib.cycles.iter().map(|c| c.dissipation.error).collect();
+        assert_eq!(column("energy_error"), error);
+        let c1: Vec<f64> = lib.cycles.iter().map(|c| c.stick_at_minus.0).collect();
+        assert_eq!(column("c1_minus"), c1);
+        assert_eq!(table["x_f1"][0].as_f64(), Some(lib.cycles[0].f1_peak.x));
+        assert!(table["x_f1"][1].is_null(), "no slip in cycle 2: no peak");
+        assert_eq!(
+            v["first_loading_energy"].as_f64(),
+            Some(lib.first_loading_dissipation.value)
+        );
+    }
+    let profile = orthoslip(
+        &[
+            &on_ply("fretting", &["--amplitude", "0.18", "--profile", "1"])[..],
+            &common,
+        ]
+        .concat(),
+    );
+    assert_eq!(profile.status, 0, "{}", profile.stderr);
+    let lib = Fretting::solve(&contact, 0.18, &options).unwrap();
+    let table = &json(&profile.stdout)["profile"];
+    assert_eq!(floats(&table["x"]), lib.nodes);
+    assert_eq!(
+        floats(&table["slip_amplitude"]),
+        lib.cycles[0].slip_amplitude
+    );
+    assert_eq!(floats(&table["f2"]), lib.cycles[0].f2);
+    let fretting = |extra: &[&'static str]| {
+        let args = [
+            &on_ply(
+                "fretting",
+                &["--mu", "0.3", "--panels", "8", "--steps", "2"],
+            )[..],
+            extra,
+        ]
+        .concat();
+        orthoslip(&args)
+    };
+    for (extra, status, words) in [
+        (&["--amplitude", "0.3"][..], 2, "gross sliding"),
+        (&["--amplitude", "-0.1"][..], 2, "must be > 0"),
+        (&["--amplitude", "nan"][..], 2, "not finite"),
+        (&["--relative-amplitude", "1"][..], 2, "gross sliding"),
+        (
+            &["--amplitude", "0.1", "--profile", "9"][..],
+            2,
+            "--profile 9",
+        ),
+        (
+            &["--amplitude", "0.1", "--relative-amplitude", "0.1"][..],
+            2,
+            "cannot be used with",
+        ),
+        (&[][..], 2, "required"),
+    ] {
+        let run = fretting(extra);
+        assert_eq!(run.status, status, "{extra:?}: {}", run.stderr);
+        assert_eq!(run.stderr.lines().count(), 1, "{}", run.stderr);
+        assert!(run.stderr.contains(words), "{extra:?}: {}", run.stderr);
+    }
+    // strong coupling at a large amplitude: the pressure turns negative (lift-off)
+    let lift = orthoslip(&[
+        "fretting",
+        "--effective",
+        "1",
+        "-0.6",
+        "1",
+        "1",
+        "--mu",
+        "2",
+        "--relative-amplitude",
+        "0.9",
+        "--panels",
+        "16",
+        "--steps",
+        "2",
+    ]);
+    assert_eq!(lift.status, 1, "{}", lift.stderr);
+    assert!(
+        lift.stderr.contains("no admissible solution"),
+        "{}",
+        lift.stderr
+    );
+    let help = orthoslip(&["fretting", "--help"]);
+    for words in [
+        "--amplitude <Q/P>",
+        "--relative-amplitude",
+        "--max-cycles <N>",
+        "--profile <K>",
+    ] {
+        assert!(
+            help.stdout.contains(words),
+            "fretting --help lacks {words:?}"
+        );
+    }
+}

@@ -45,6 +45,56 @@ pub enum Command {
     /// against mu.
     #[command(after_help = EXIT_STATUS)]
     Sweep(SweepArgs),
+    /// Fretting: the normal load P, then a tangential load Q: 0 -> Q*, then cycles
+    /// Q* -> -Q* -> Q* until the state repeats or --max-cycles; per cycle the dissipated
+    /// energy, the slip amplitude, the stick sets and the Ruiz parameters' peaks (or, with
+    /// --profile, one cycle's profiles along the contact).
+    #[command(after_help = EXIT_STATUS)]
+    Fretting(FrettingArgs),
+}
+
+#[derive(Args, Debug)]
+pub struct FrettingArgs {
+    #[command(flatten)]
+    pub material: MaterialArgs,
+    /// Coulomb friction coefficient (finite, > 0).
+    #[arg(long, allow_negative_numbers = true)]
+    pub mu: f64,
+    #[command(flatten)]
+    pub amplitude: AmplitudeArgs,
+    /// Cycles at most (1 ..= 10000).
+    #[arg(long, value_name = "N", default_value_t = 10)]
+    pub max_cycles: usize,
+    /// Panels per half-width of the grid (8 ..= 2000; cost grows like N^3).
+    #[arg(long, value_name = "N", default_value_t = 100)]
+    pub panels: usize,
+    /// Load steps per quarter cycle (2 ..= 10000).
+    #[arg(long, value_name = "N", default_value_t = 10)]
+    pub steps: usize,
+    /// A cycle repeats when its end state is its start state to this (int |dq| dx in units of
+    /// P, the punch displacement in P/E); a repeating cycle dissipating at most this (P^2/E)
+    /// is shakedown.
+    #[arg(long, value_name = "TOL", default_value = "1e-8")]
+    pub repeat_tol: f64,
+    /// Instead of the table per cycle, the profiles of cycle K (1-based) at the panel
+    /// midpoints: slip amplitude, tau_max, sigma_xx max, F1, F2.
+    #[arg(long, value_name = "K")]
+    pub profile: Option<usize>,
+    /// Output format.
+    #[arg(long, value_enum, default_value_t = Format::Table)]
+    pub format: Format,
+}
+
+/// The amplitude Q*, given as exactly one of two ratios.
+#[derive(Args, Debug)]
+#[group(required = true, multiple = false)]
+pub struct AmplitudeArgs {
+    /// The amplitude as Q*/P (0 < Q*/P < mu).
+    #[arg(long, value_name = "Q/P", allow_negative_numbers = true)]
+    pub amplitude: Option<f64>,
+    /// The amplitude as Q*/(mu P) (0 < ratio < 1).
+    #[arg(long, value_name = "Q/(MU P)", allow_negative_numbers = true)]
+    pub relative_amplitude: Option<f64>,
 }
 
 #[derive(Args, Debug)]

@@ -1,11 +1,13 @@
 //! The `orthoslip` command-line tool over the library's public Rust API: the default scene
-//! without arguments ([`scene`]), `solve` ([`solve`]) and `sweep` ([`sweep`]); the command
-//! line is declared in [`args`], the output formats in [`report`].
+//! without arguments ([`scene`]), `solve` ([`solve`]), `sweep` ([`sweep`]) and `fretting`
+//! ([`fretting`]); the command line is declared in [`args`], the output formats in
+//! [`report`].
 //!
 //! Exit status: 0 success, 1 solver failure (or output not written), 2 bad input; every error
 //! is one line on stderr.
 
 mod args;
+mod fretting;
 mod report;
 mod scene;
 mod solve;
@@ -119,6 +121,7 @@ pub fn main() -> ExitCode {
         None => scene::run(&mut out).map_err(Failure::from),
         Some(Command::Solve(a)) => solve::run(a, &mut out),
         Some(Command::Sweep(a)) => sweep::run(a, &mut out),
+        Some(Command::Fretting(a)) => fretting::run(a, &mut out),
     };
     // Flush what was written, also before reporting a failure.
     let flushed = out.flush().map_err(Failure::from);
