@@ -2,7 +2,8 @@
 """The default scene through the Python package: a carbon/epoxy ply (plane stress) under a
 rigid flat punch with mu = 0.3. Prints what c_examples/default_scene.c prints, in the same
 format: the constants, c, 1 - c, the method used, its error estimate, p, q at 21 points, the
-edge intensity, the stresses at (0, -0.5) and the slip at x = 0.99.
+edge intensity, the stresses at (0, -0.5), the slip at x = 0.99 and the energy dissipated in
+the first cycle of Q between +-0.6 mu P.
 
 Run it after ``pip install ./python``; a failure raises orthoslip.OrthoslipError.
 """
@@ -38,3 +39,10 @@ sxx, syy, sxy = solution.stresses(0.0, -0.5)
 print(f"edge intensity: k = {k:.17g}, g = {g:.17g}")
 print(f"stresses at (0, -0.5): sxx = {sxx:.17g}, syy = {syy:.17g}, sxy = {sxy:.17g}")
 print(f"slip at x = 0.99: {solution.slip(0.99):.17g}")
+
+# fretting: Q cycled between +-0.6 mu P after the normal load, on a coarse, quick grid (32
+# panels per half-width, 4 load steps per quarter cycle); energies per P^2/E
+cycles = orthoslip.Contact(ply, mu).solve_cycles(0.6 * mu, max_cycles=10, panels=32, steps=4)
+print(f"fretting cycles = {cycles.count}")
+print(f"fretting W1 = {cycles.dissipated_energy[0]:.17g}")
+print(f"fretting W1 error = {cycles.dissipated_energy_error[0]:.3e}")

@@ -12,12 +12,26 @@ the punch half-width a). The package calls the orthoslip C library bundled with 
     solution.c, solution.slip_width, solution.method, solution.error_estimate
     p, q = solution.tractions(np.linspace(-0.99, 0.99, 199))  # per P/a
 
+Fretting (a tangential load Q cycled between +-Q* after the normal load P)::
+
+    cycles = orthoslip.Contact(ply, mu=0.3).solve_cycles(0.18)  # Q*/P
+    cycles.state, cycles.dissipated_energy  # per cycle, in P^2/E
+
 Every failure of the library raises an :class:`OrthoslipError` subclass carrying the status
 and the library's message.
 """
 
 from . import _ffi
 from ._api import Contact, Effective, Green, Material, Method, MethodLike, Solution
+from ._fretting import (
+    CycleMethod,
+    Cycles,
+    CycleState,
+    EnergyBalance,
+    History,
+    RuizPeaks,
+    StickZones,
+)
 from ._ffi import (
     InadmissibleMaterialError,
     InternalError,
@@ -41,6 +55,13 @@ __all__ = [
     "Method",
     "MethodLike",
     "Solution",
+    "CycleMethod",
+    "CycleState",
+    "Cycles",
+    "History",
+    "EnergyBalance",
+    "RuizPeaks",
+    "StickZones",
     "OrthoslipError",
     "NullPointerError",
     "InvalidArgumentError",

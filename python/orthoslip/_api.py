@@ -13,6 +13,8 @@ from ._ffi import check, ffi, get, lib, new_handle
 if TYPE_CHECKING:
     from matplotlib.axes import Axes
 
+    from ._fretting import CycleMethodLike, Cycles, History
+
 class Method(enum.IntEnum):
     """Solution methods (the C ABI's ``orthoslip_method`` values)."""
 
@@ -217,6 +219,31 @@ class Contact:
                 self._handle,
             )
         )
+
+    def solve_cycles(
+        self,
+        q_amp_over_p: float,
+        max_cycles: int = 10,
+        panels: int = 100,
+        steps: int = 10,
+        repeat_tol: float = 1e-8,
+        method: CycleMethodLike = "lcp_history",
+    ) -> Cycles:
+        """Fretting: the normal load, Q: 0 -> Q*, then cycles Q* -> -Q* -> Q* (Q* =
+        ``q_amp_over_p`` P) until the state repeats or ``max_cycles`` are done, on ``panels``
+        panels per half-width with ``steps`` load steps per quarter cycle. Uses the material
+        and friction (not ``method``/``tol`` of the contact). See :class:`Cycles`."""
+        from ._fretting import solve_cycles
+
+        return solve_cycles(self, q_amp_over_p, max_cycles, panels, steps, repeat_tol, method)
+
+    def history(
+        self, panels: int = 100, steps: int = 10, method: CycleMethodLike = "lcp_history"
+    ) -> History:
+        """A load path from the normal-load state: see :class:`History`."""
+        from ._fretting import History
+
+        return History(self, panels, steps, method)
 
     def __repr__(self) -> str:
         return (

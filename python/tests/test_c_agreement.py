@@ -99,7 +99,7 @@ def test_default_scene_script_prints_what_the_c_example_prints(build_c) -> None:
                               capture_output=True, text=True, check=True).stdout.splitlines()
     assert c_lines[0].endswith("(C)") and py_lines[0].endswith("(Python)")
     assert py_lines[0].removesuffix("(Python)") == c_lines[0].removesuffix("(C)")
-    assert len(py_lines) == len(c_lines) == 33
+    assert len(py_lines) == len(c_lines) == 36
     for py, c in zip(py_lines[1:], c_lines[1:]):
         assert py == c
     assert any(line.startswith("c = 0.0891") for line in py_lines)

@@ -1,0 +1,118 @@
+"""Load paths and fretting cycles through the package, checked against facts the library does
+not use: the uncoupled closed form (theory_tangential (T10)), the loop's area computed here
+with NumPy against the dissipation of a closed cycle, mirror symmetry under Q -> -Q, and bad
+input."""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+import pytest
+
+from orthoslip import (
+    Contact,
+    CycleMethod,
+    CycleState,
+    InvalidArgumentError,
+    Material,
+)
+
+
+def test_uncoupled_limit_sticks_with_the_closed_form_shear() -> None:
+    """b* -> 0 (nu -> 1): q = (Q/P) / (pi sqrt(1 - x^2)), all stick, nothing dissipated."""
+    k = Contact(Material.effective(1.0, 1.0 - 1e-6, 1.0, 1.0), mu=0.3)
+    h = k.history(panels=40, steps=3)
+    h.load(0.25)
+    x = np.array([-0.8, -0.3, 0.1, 0.6])
+    p, q, zone = h.tractions(x)
+    p0 = 1.0 / (math.pi * np.sqrt(1.0 - x * x))
+    np.testing.assert_allclose(p, p0, atol=2.0 / 40)
+    np.testing.assert_allclose(q, 0.25 * p0, atol=0.5 / 40)
+    assert np.all(zone == 0) and zone.dtype == np.intc
+    assert h.stick_zone[:2] == (-1.0, 1.0)
+    assert h.dissipated_energy[0] < 1e-9
+    cy = k.solve_cycles(0.25, max_cycles=4, panels=40, steps=3)
+    assert cy.state == CycleState.SHAKEDOWN and cy.count == 1 and cy.steady
+    assert cy.method == CycleMethod.LCP_HISTORY
+    assert cy.dissipated_energy[0] < 1e-9
+
+
+def test_closed_cycle_dissipates_its_loop_area() -> None:
+    """b* = 0.5, mu = 0.5, Q* = 0.9 mu P: a steady slip cycle, whose loop area (trapezoidal
+    rule here) equals its dissipation within the estimate, with no net work of P."""
+    k = Contact(Material.effective(1.0, 0.0, 1.0, 1.0), mu=0.5)
+    cy = k.solve_cycles(0.45, max_cycles=8, panels=40, steps=4)
+    assert cy.state == CycleState.STEADY_SLIP
+    last = cy.count - 1
+    q, u = cy.loop(last)
+    area = float(np.sum(0.5 * (q[1:] + q[:-1]) * np.diff(u)))
+    balance = cy.energy_balance(last)
+    assert area == pytest.approx(balance.loop_work, abs=1e-14)
+    assert abs(balance.normal_work) + abs(balance.energy_change) < 1e-8
+    w, err = cy.dissipated_energy[last], cy.dissipated_energy_error[last]
+    assert w > 1e-3 and abs(area - w) <= err
+
+
+def test_ply_cycle_outputs() -> None:
+    """The ply at 0.6 mu P shakes down after one cycle; the unloading slips at x = -1."""
+    ply = Material.plane_stress(181e9, 10.3e9, 7.17e9, 0.28)
+    cy = Contact(ply, mu=0.3).solve_cycles(0.18, max_cycles=4, panels=32, steps=4)
+    assert cy.state == CycleState.SHAKEDOWN and cy.count == 2
+    assert cy.dissipated_energy[0] > 1e-3 and cy.dissipated_energy[1] < 1e-12
+    x = np.linspace(-0.99, 0.99, 9).reshape(3, 3)
+    amp = cy.slip_amplitude(0, x)
+    f1, f2 = cy.ruiz(0, x)
+    tau, sxx = cy.stress_peaks(0, x)
+    assert amp.shape == f1.shape == (3, 3)
+    np.testing.assert_array_equal(f1, tau * amp)
+    np.testing.assert_array_equal(f2, np.maximum(sxx, 0.0) * f1)
+    assert amp[0, 0] > 0.0 and cy.ruiz_peaks(0).x_f1 < -0.9
+    assert math.isnan(cy.ruiz_peaks(1).x_f1)
+    zones = cy.stick_zones(0)
+    assert zones.minus[1] == 1.0 and -1.0 < zones.minus[0] < 0.0 and zones.error < 0.1
+    qp, _, c1, c2 = cy.step(0, 7)
+    assert qp == -0.18 and (c1, c2) == zones.minus
+
+
+def test_mirror_symmetry() -> None:
+    k = Contact(Material.effective(1.0, 0.2, 1.3, 1.1), mu=0.4)
+    up, down = k.history(panels=24, steps=3), k.history(panels=24, steps=3)
+    up.load(0.2)
+    down.load(-0.2)
+    x = np.array([-0.77, -0.3, 0.21, 0.62])
+    p, q, z = up.tractions(x)
+    pm, qm, zm = down.tractions(-x)
+    np.testing.assert_allclose(p, pm, atol=1e-10)
+    np.testing.assert_allclose(q, -qm, atol=1e-10)
+    np.testing.assert_array_equal(z, -zm)
+    (a1, a2, _), (b1, b2, _) = up.stick_zone, down.stick_zone
+    assert a1 == pytest.approx(-b2, abs=1e-10) and a2 == pytest.approx(-b1, abs=1e-10)
+
+
+@pytest.mark.parametrize("amp", [math.nan, math.inf, -0.1, 0.0, 0.3, 0.5])
+def test_bad_amplitudes_are_refused(amp: float) -> None:
+    k = Contact(Material.effective(1.0, 0.2, 1.3, 1.1), mu=0.3)
+    with pytest.raises(InvalidArgumentError, match="amplitude"):
+        k.solve_cycles(amp, panels=8, steps=2)
+
+
+def test_bad_input_is_refused() -> None:
+    m = Material.effective(1.0, 0.2, 1.3, 1.1)
+    with pytest.raises(InvalidArgumentError, match="mu > 0"):
+        Contact(m, mu=0.0).solve_cycles(0.1, panels=8, steps=2)
+    k = Contact(m, mu=0.3)
+    with pytest.raises(InvalidArgumentError):
+        k.solve_cycles(0.1, panels=7)
+    with pytest.raises(ValueError, match="unknown cycle method"):
+        k.history(method="exact")
+    h = k.history(panels=8, steps=2)
+    h.load(0.1)
+    with pytest.raises(InvalidArgumentError, match="gross sliding"):
+        h.load(0.3)
+    assert h.state[0] == 0.1
+    with pytest.raises(InvalidArgumentError, match="contact"):
+        h.tractions([0.0, 1.5])
+    cy = k.solve_cycles(0.1, max_cycles=1, panels=8, steps=2)
+    with pytest.raises(IndexError):
+        cy.slip_amplitude(1, 0.0)
