@@ -1,7 +1,7 @@
 /* The default scene through the C API: a carbon/epoxy ply (plane stress) under a rigid flat
  * punch with Coulomb friction mu = 0.3. Prints the effective constants, the Green constants
- * A, B, C, the stick half-width c, 1 - c, the method used, its error estimate and p, q at 21
- * points. Every status is checked; on failure the library's message is printed and the exit
+ * A, B, C, the stick half-width c, 1 - c, the method used, its error estimate, p, q at 21
+ * points, and the energy dissipated in the first cycle of Q between +-0.6 mu P. Every status is checked; on failure the library's message is printed and the exit
  * code is 1. C11. */
 #include <stdio.h>
 #include <stdlib.h>
@@ -49,6 +49,8 @@ int main(void) {
     orthoslip_material *material = NULL;
     orthoslip_contact *contact = NULL;
     orthoslip_solution *solution = NULL;
+    orthoslip_cycle_options *options = NULL;
+    orthoslip_cycles *cycles = NULL;
 
     printf("orthoslip %s (C)\n", orthoslip_version());
     printf("ply: E11 = %g Pa, E22 = %g Pa, G12 = %g Pa, nu12 = %g, plane stress; mu = %g\n", e11,
@@ -98,9 +100,27 @@ int main(void) {
     printf("edge intensity: k = %.17g, g = %.17g\n", k, g);
     printf("stresses at (0, -0.5): sxx = %.17g, syy = %.17g, sxy = %.17g\n", sxx, syy, sxy);
     printf("slip at x = 0.99: %.17g\n", slip);
+
+    /* fretting: Q cycled between +-0.6 mu P after the normal load, on a coarse, quick grid
+       (32 panels per half-width, 4 load steps per quarter cycle); energies per P^2/E */
+    size_t n_cycles;
+    int steady;
+    double w1, w1_error;
+    CHECK(orthoslip_cycle_options_new(&options));
+    CHECK(orthoslip_cycle_options_set_panels(options, 32));
+    CHECK(orthoslip_cycle_options_set_steps(options, 4));
+    CHECK(orthoslip_contact_solve_cycles_with_options(contact, options, 0.6 * mu, 10, &cycles));
+    CHECK(orthoslip_cycles_count(cycles, &n_cycles, &steady));
+    CHECK(orthoslip_cycles_dissipated_energy(cycles, 0, &w1));
+    CHECK(orthoslip_cycles_dissipated_energy_error(cycles, 0, &w1_error));
+    printf("fretting cycles = %zu\n", n_cycles);
+    printf("fretting W1 = %.17g\n", w1);
+    printf("fretting W1 error = %.3e\n", w1_error);
     exit_code = EXIT_SUCCESS;
 
 cleanup:
+    orthoslip_cycles_free(cycles);
+    orthoslip_cycle_options_free(options);
     orthoslip_solution_free(solution);
     orthoslip_contact_free(contact);
     orthoslip_material_free(material);

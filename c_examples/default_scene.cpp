@@ -56,6 +56,16 @@ int main() {
         std::printf("stresses at (0, -0.5): sxx = %.17g, syy = %.17g, sxy = %.17g\n", st.sxx[0],
                     st.syy[0], st.sxy[0]);
         std::printf("slip at x = 0.99: %.17g\n", s.slip({0.99})[0]);
+
+        // Fretting: Q cycled between +-0.6 mu P (32 panels per half-width, 4 steps per
+        // quarter cycle: a coarse, quick grid)
+        orthoslip::cycle_options o;
+        o.panels(32).steps(4);
+        const auto cy = punch.solve_cycles(0.6 * mu, 10, o);
+        const auto w1 = cy.dissipated_energy(0);
+        std::printf("fretting cycles = %zu\n", cy.count());
+        std::printf("fretting W1 = %.17g\n", w1.value);
+        std::printf("fretting W1 error = %.3e\n", w1.error);
     } catch (const orthoslip::error &e) {
         std::fprintf(stderr, "default_scene: %s\n", e.what());
         return 1;

@@ -1,6 +1,7 @@
 ! The default scene through the Fortran bindings (orthoslip_mod): a carbon/epoxy ply (plane
-! stress) under a rigid flat punch with mu = 0.3. Every status is checked; on failure the
-! library's message is printed and the program stops with exit code 1.
+! stress) under a rigid flat punch with mu = 0.3, then the first fretting cycle of Q between
+! +-0.6 mu P. Every status is checked; on failure the library's message is printed and the
+! program stops with exit code 1.
 program default_scene
   use, intrinsic :: iso_c_binding, only: c_int, c_double, c_size_t, c_ptr, c_null_ptr
   use, intrinsic :: iso_fortran_env, only: error_unit
@@ -11,6 +12,10 @@ program default_scene
   real(c_double), parameter :: e11 = 181e9_c_double, e22 = 10.3e9_c_double, &
        g12 = 7.17e9_c_double, nu12 = 0.28_c_double, mu = 0.3_c_double
   type(c_ptr) :: material = c_null_ptr, contact = c_null_ptr, solution = c_null_ptr
+  type(c_ptr) :: options = c_null_ptr, cycles = c_null_ptr
+  integer(c_size_t) :: n_cycles
+  integer(c_int) :: steady
+  real(c_double) :: w1, w1_error
   real(c_double) :: e, nu, delta, kappa, a, b, c_green, c, one_minus_c, c_error
   real(c_double) :: x(n), p(n), q(n)
   real(c_double) :: k, g, sxx(1), syy(1), sxy(1), slip(1)
@@ -66,6 +71,26 @@ program default_scene
        ', sxy = ', sxy(1)
   print '(a,es24.16e3)', 'slip at x = 0.99: ', slip(1)
 
+  ! fretting: Q cycled between +-0.6 mu P on a coarse, quick grid (32 panels per half-width,
+  ! 4 load steps per quarter cycle); energies per P^2/E
+  call check(orthoslip_cycle_options_new(options), 'orthoslip_cycle_options_new')
+  call check(orthoslip_cycle_options_set_panels(options, 32_c_size_t), &
+       'orthoslip_cycle_options_set_panels')
+  call check(orthoslip_cycle_options_set_steps(options, 4_c_size_t), &
+       'orthoslip_cycle_options_set_steps')
+  call check(orthoslip_contact_solve_cycles_with_options(contact, options, 0.6_c_double * mu, &
+       10_c_size_t, cycles), 'orthoslip_contact_solve_cycles_with_options')
+  call check(orthoslip_cycles_count(cycles, n_cycles, steady), 'orthoslip_cycles_count')
+  call check(orthoslip_cycles_dissipated_energy(cycles, 0_c_size_t, w1), &
+       'orthoslip_cycles_dissipated_energy')
+  call check(orthoslip_cycles_dissipated_energy_error(cycles, 0_c_size_t, w1_error), &
+       'orthoslip_cycles_dissipated_energy_error')
+  print '(a,i0)', 'fretting cycles = ', n_cycles
+  print '(a,es24.16e3)', 'fretting W1 = ', w1
+  print '(a,es10.3e2)', 'fretting W1 error = ', w1_error
+
+  call orthoslip_cycles_free(cycles)
+  call orthoslip_cycle_options_free(options)
   call orthoslip_solution_free(solution)
   call orthoslip_contact_free(contact)
   call orthoslip_material_free(material)
@@ -78,6 +103,8 @@ contains
     if (status /= ORTHOSLIP_OK) then
       write (error_unit, '(5a)') 'default_scene: ', what, ' failed: ', status_name(status), &
            ': ' // last_error_message()
+      call orthoslip_cycles_free(cycles)
+      call orthoslip_cycle_options_free(options)
       call orthoslip_solution_free(solution)
       call orthoslip_contact_free(contact)
       call orthoslip_material_free(material)

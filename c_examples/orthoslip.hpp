@@ -1,5 +1,6 @@
 // Header-only C++17 RAII wrapper over the orthoslip C API: owning handles for material,
-// contact and solution, and an exception carrying the status and the library's message.
+// contact and solution, for load paths (history) and fretting runs (cycles), and an
+// exception carrying the status and the library's message.
 #ifndef ORTHOSLIP_HPP
 #define ORTHOSLIP_HPP
 
@@ -7,6 +8,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "orthoslip.h"
@@ -164,6 +166,149 @@ class material {
     detail::handle<orthoslip_material, orthoslip_material_free> h_;
 };
 
+/// Options of a load path or a fretting run (defaults: LCP history, 100 panels per
+/// half-width, 10 load steps per quarter cycle, repeat tolerance 1e-8).
+class cycle_options {
+  public:
+    cycle_options() {
+        orthoslip_cycle_options *raw = nullptr;
+        check(orthoslip_cycle_options_new(&raw));
+        h_.reset(raw);
+    }
+    cycle_options &method(orthoslip_cycle_method m) {
+        check(orthoslip_cycle_options_set_method(h_.get(), m));
+        return *this;
+    }
+    cycle_options &panels(std::size_t n) {
+        check(orthoslip_cycle_options_set_panels(h_.get(), n));
+        return *this;
+    }
+    cycle_options &steps(std::size_t n) {
+        check(orthoslip_cycle_options_set_steps(h_.get(), n));
+        return *this;
+    }
+    cycle_options &repeat_tolerance(double tol) {
+        check(orthoslip_cycle_options_set_repeat_tolerance(h_.get(), tol));
+        return *this;
+    }
+    const orthoslip_cycle_options *get() const noexcept { return h_.get(); }
+
+  private:
+    detail::handle<orthoslip_cycle_options, orthoslip_cycle_options_free> h_;
+};
+
+/// A stick set [c1, c2] and the estimate of its ends' error.
+struct stick_zone {
+    double c1, c2, error;
+};
+/// A value with its error estimate.
+struct estimate {
+    double value, error;
+};
+/// p, q and the zone (0 stick, +1 slip in +x, -1 slip in -x) at points.
+struct path_tractions {
+    std::vector<double> p, q;
+    std::vector<int> zone;
+};
+/// The Q-displacement loop of a cycle: Q/P and u (per P/E).
+struct cycle_loop {
+    std::vector<double> q_over_p, u;
+};
+
+/// A load path: the normal load, then Q moved monotonically by `load` (per P/E, P^2/E).
+class history {
+  public:
+    /// Q moves monotonically to q_over_p * P; on failure the path is unchanged.
+    void load(double q_over_p) { check(orthoslip_history_load(h_.get(), q_over_p)); }
+    orthoslip::stick_zone stick_zone() const {
+        orthoslip::stick_zone z{};
+        check(orthoslip_history_stick_zone(h_.get(), &z.c1, &z.c2, &z.error));
+        return z;
+    }
+    path_tractions at(const std::vector<double> &x) const {
+        path_tractions t{std::vector<double>(x.size()), std::vector<double>(x.size()),
+                         std::vector<int>(x.size())};
+        if (!x.empty()) {
+            check(orthoslip_history_tractions(h_.get(), x.data(), x.size(), t.p.data(),
+                                              t.q.data(), t.zone.data()));
+        }
+        return t;
+    }
+    estimate dissipated_energy() const {
+        estimate e{};
+        check(orthoslip_history_dissipated_energy(h_.get(), &e.value, &e.error));
+        return e;
+    }
+    const orthoslip_history *get() const noexcept { return h_.get(); }
+
+  private:
+    friend class contact;
+    explicit history(orthoslip_history *raw) : h_(raw) {}
+    detail::handle<orthoslip_history, orthoslip_history_free> h_;
+};
+
+/// A fretting run: cycles Q* -> -Q* -> Q* after the first loading (cycle 0 is the first).
+class cycles {
+  public:
+    std::size_t count() const {
+        std::size_t n = 0;
+        int steady = 0;
+        check(orthoslip_cycles_count(h_.get(), &n, &steady));
+        return n;
+    }
+    orthoslip_cycle_state state() const {
+        orthoslip_cycle_state s{};
+        check(orthoslip_cycles_state(h_.get(), &s));
+        return s;
+    }
+    /// Energy dissipated in a cycle (P^2/E) and its error estimate.
+    estimate dissipated_energy(std::size_t cycle) const {
+        estimate e{};
+        check(orthoslip_cycles_dissipated_energy(h_.get(), cycle, &e.value));
+        check(orthoslip_cycles_dissipated_energy_error(h_.get(), cycle, &e.error));
+        return e;
+    }
+    /// Slip amplitude (per P/E) at x in [-1, 1].
+    std::vector<double> slip_amplitude(std::size_t cycle, const std::vector<double> &x) const {
+        std::vector<double> a(x.size());
+        if (!x.empty()) {
+            check(orthoslip_cycles_slip_amplitude(h_.get(), cycle, x.data(), x.size(), a.data()));
+        }
+        return a;
+    }
+    /// Ruiz's F1 and F2 at x in [-1, 1].
+    std::pair<std::vector<double>, std::vector<double>> ruiz(std::size_t cycle,
+                                                             const std::vector<double> &x) const {
+        std::vector<double> f1(x.size()), f2(x.size());
+        if (!x.empty()) {
+            check(orthoslip_cycles_ruiz(h_.get(), cycle, x.data(), x.size(), f1.data(),
+                                        f2.data()));
+        }
+        return {f1, f2};
+    }
+    cycle_loop loop(std::size_t cycle) const {
+        std::size_t n = 0;
+        check(orthoslip_cycles_loop_length(h_.get(), cycle, &n));
+        cycle_loop l{std::vector<double>(n), std::vector<double>(n)};
+        check(orthoslip_cycles_loop(h_.get(), cycle, n, l.q_over_p.data(), l.u.data()));
+        return l;
+    }
+    /// The stick sets at -Q* (first) and +Q* (second); the error estimate in both.
+    std::pair<orthoslip::stick_zone, orthoslip::stick_zone> stick_zones(std::size_t cycle) const {
+        orthoslip::stick_zone m{}, p{};
+        check(orthoslip_cycles_stick_zones(h_.get(), cycle, &m.c1, &m.c2, &p.c1, &p.c2,
+                                           &m.error));
+        p.error = m.error;
+        return {m, p};
+    }
+    const orthoslip_cycles *get() const noexcept { return h_.get(); }
+
+  private:
+    friend class contact;
+    explicit cycles(orthoslip_cycles *raw) : h_(raw) {}
+    detail::handle<orthoslip_cycles, orthoslip_cycles_free> h_;
+};
+
 class contact {
   public:
     /// Copies the material; `m` may be destroyed afterwards.
@@ -193,6 +338,20 @@ class contact {
         orthoslip_solution *raw = nullptr;
         check(orthoslip_contact_solve(h_.get(), &raw));
         return solution(raw);
+    }
+    /// Fretting: Q cycled +q_amp P -> -q_amp P -> +q_amp P after the normal load.
+    orthoslip::cycles solve_cycles(double q_amp_over_p, std::size_t max_cycles,
+                                   const cycle_options &o = cycle_options()) const {
+        orthoslip_cycles *raw = nullptr;
+        check(orthoslip_contact_solve_cycles_with_options(h_.get(), o.get(), q_amp_over_p,
+                                                          max_cycles, &raw));
+        return orthoslip::cycles(raw);
+    }
+    /// A load path from the normal-load state.
+    orthoslip::history history(const cycle_options &o = cycle_options()) const {
+        orthoslip_history *raw = nullptr;
+        check(orthoslip_history_new_with_options(h_.get(), o.get(), &raw));
+        return orthoslip::history(raw);
     }
     const orthoslip_contact *get() const noexcept { return h_.get(); }
 

@@ -24,6 +24,13 @@ module orthoslip_mod
   integer(c_int), parameter, public :: ORTHOSLIP_METHOD_COUPLED = 3
   integer(c_int), parameter, public :: ORTHOSLIP_METHOD_LCP = 4
 
+  ! orthoslip_cycle_method
+  integer(c_int), parameter, public :: ORTHOSLIP_CYCLE_METHOD_LCP_HISTORY = 0
+  ! orthoslip_cycle_state
+  integer(c_int), parameter, public :: ORTHOSLIP_CYCLE_SHAKEDOWN = 0
+  integer(c_int), parameter, public :: ORTHOSLIP_CYCLE_STEADY_SLIP = 1
+  integer(c_int), parameter, public :: ORTHOSLIP_CYCLE_LIMIT_REACHED = 2
+
   public :: orthoslip_material_new_plane_stress, orthoslip_material_new_plane_strain, &
        orthoslip_material_new_effective, orthoslip_material_free, &
        orthoslip_material_effective, orthoslip_material_green, &
@@ -35,6 +42,24 @@ module orthoslip_mod
        orthoslip_status_string, orthoslip_version, orthoslip_solution_stresses, &
        orthoslip_solution_edge_intensity, orthoslip_solution_slip, &
        orthoslip_solution_traction_error_estimate, orthoslip_contact_set_traction_tolerance
+  public :: orthoslip_cycle_options_new, orthoslip_cycle_options_free, &
+       orthoslip_cycle_options_set_method, orthoslip_cycle_options_set_panels, &
+       orthoslip_cycle_options_set_steps, orthoslip_cycle_options_set_repeat_tolerance, &
+       orthoslip_solution_stick_zone, orthoslip_history_new, &
+       orthoslip_history_new_with_options, orthoslip_history_free, &
+       orthoslip_history_load, orthoslip_history_state, &
+       orthoslip_history_stick_zone, orthoslip_history_tractions, &
+       orthoslip_history_dissipated_energy, orthoslip_history_traction_error_estimate, &
+       orthoslip_contact_solve_cycles, orthoslip_contact_solve_cycles_with_options, &
+       orthoslip_cycles_free, orthoslip_cycles_count, &
+       orthoslip_cycles_method, orthoslip_cycles_state, &
+       orthoslip_cycles_dissipated_energy, orthoslip_cycles_dissipated_energy_error, &
+       orthoslip_cycles_first_loading_energy, orthoslip_cycles_slip_amplitude, &
+       orthoslip_cycles_slip_amplitude_error, orthoslip_cycles_ruiz, &
+       orthoslip_cycles_stress_peaks, orthoslip_cycles_ruiz_peaks, &
+       orthoslip_cycles_stick_zones, orthoslip_cycles_loop_length, &
+       orthoslip_cycles_loop, orthoslip_cycles_energy_balance, &
+       orthoslip_cycles_step, orthoslip_cycles_step_tractions
   public :: last_error_message, status_name, version
 
   interface
@@ -238,6 +263,348 @@ module orthoslip_mod
       real(c_double), intent(in) :: x(*)
       integer(c_size_t), value :: n
       real(c_double), intent(out) :: slip(*)
+      integer(c_int) :: status
+    end function
+
+
+    ! Tangential load and fretting (docs/fretting.md): per P/E, P^2/E; zone arrays hold
+    ! 0 stick, +1 slip in +x, -1 slip in -x; cycle and step indices are 0-based.
+    function orthoslip_cycle_options_new(out) &
+         bind(c, name="orthoslip_cycle_options_new") result(status)
+      import :: c_int, c_ptr
+      type(c_ptr), intent(out) :: out
+      integer(c_int) :: status
+    end function
+
+    subroutine orthoslip_cycle_options_free(o) bind(c, name="orthoslip_cycle_options_free")
+      import :: c_ptr
+      type(c_ptr), value :: o
+    end subroutine
+
+    function orthoslip_cycle_options_set_method(o, method) &
+         bind(c, name="orthoslip_cycle_options_set_method") result(status)
+      import :: c_int, c_ptr
+      type(c_ptr), value :: o
+      integer(c_int), value :: method
+      integer(c_int) :: status
+    end function
+
+    function orthoslip_cycle_options_set_panels(o, panels) &
+         bind(c, name="orthoslip_cycle_options_set_panels") result(status)
+      import :: c_int, c_size_t, c_ptr
+      type(c_ptr), value :: o
+      integer(c_size_t), value :: panels
+      integer(c_int) :: status
+    end function
+
+    function orthoslip_cycle_options_set_steps(o, steps) &
+         bind(c, name="orthoslip_cycle_options_set_steps") result(status)
+      import :: c_int, c_size_t, c_ptr
+      type(c_ptr), value :: o
+      integer(c_size_t), value :: steps
+      integer(c_int) :: status
+    end function
+
+    function orthoslip_cycle_options_set_repeat_tolerance(o, tol) &
+         bind(c, name="orthoslip_cycle_options_set_repeat_tolerance") result(status)
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: o
+      real(c_double), value :: tol
+      integer(c_int) :: status
+    end function
+
+    function orthoslip_solution_stick_zone(s, c1, c2) &
+         bind(c, name="orthoslip_solution_stick_zone") result(status)
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: s
+      real(c_double), intent(out) :: c1
+      real(c_double), intent(out) :: c2
+      integer(c_int) :: status
+    end function
+
+    function orthoslip_history_new(k, out) &
+         bind(c, name="orthoslip_history_new") result(status)
+      import :: c_int, c_ptr
+      type(c_ptr), value :: k
+      type(c_ptr), intent(out) :: out
+      integer(c_int) :: status
+    end function
+
+    function orthoslip_history_new_with_options(k, o, out) &
+         bind(c, name="orthoslip_history_new_with_options") result(status)
+      import :: c_int, c_ptr
+      type(c_ptr), value :: k
+      type(c_ptr), value :: o
+      type(c_ptr), intent(out) :: out
+      integer(c_int) :: status
+    end function
+
+    subroutine orthoslip_history_free(h) bind(c, name="orthoslip_history_free")
+      import :: c_ptr
+      type(c_ptr), value :: h
+    end subroutine
+
+    function orthoslip_history_load(h, q_over_p) &
+         bind(c, name="orthoslip_history_load") result(status)
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: h
+      real(c_double), value :: q_over_p
+      integer(c_int) :: status
+    end function
+
+    function orthoslip_history_state(h, q_over_p, u, moment) &
+         bind(c, name="orthoslip_history_state") result(status)
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: h
+      real(c_double), intent(out) :: q_over_p
+      real(c_double), intent(out) :: u
+      real(c_double), intent(out) :: moment
+      integer(c_int) :: status
+    end function
+
+    function orthoslip_history_stick_zone(h, c1, c2, err) &
+         bind(c, name="orthoslip_history_stick_zone") result(status)
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: h
+      real(c_double), intent(out) :: c1
+      real(c_double), intent(out) :: c2
+      real(c_double), intent(out) :: err
+      integer(c_int) :: status
+    end function
+
+    function orthoslip_history_tractions(h, x, n, p, q, zone) &
+         bind(c, name="orthoslip_history_tractions") result(status)
+      import :: c_int, c_double, c_size_t, c_ptr
+      type(c_ptr), value :: h
+      real(c_double), intent(in) :: x(*)
+      integer(c_size_t), value :: n
+      real(c_double), intent(out) :: p(*)
+      real(c_double), intent(out) :: q(*)
+      integer(c_int), intent(out) :: zone(*)
+      integer(c_int) :: status
+    end function
+
+    function orthoslip_history_dissipated_energy(h, w, err) &
+         bind(c, name="orthoslip_history_dissipated_energy") result(status)
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: h
+      real(c_double), intent(out) :: w
+      real(c_double), intent(out) :: err
+      integer(c_int) :: status
+    end function
+
+    function orthoslip_history_traction_error_estimate(h, err) &
+         bind(c, name="orthoslip_history_traction_error_estimate") result(status)
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: h
+      real(c_double), intent(out) :: err
+      integer(c_int) :: status
+    end function
+
+    function orthoslip_contact_solve_cycles(k, q_amp_over_p, max_cycles, out) &
+         bind(c, name="orthoslip_contact_solve_cycles") result(status)
+      import :: c_int, c_double, c_size_t, c_ptr
+      type(c_ptr), value :: k
+      real(c_double), value :: q_amp_over_p
+      integer(c_size_t), value :: max_cycles
+      type(c_ptr), intent(out) :: out
+      integer(c_int) :: status
+    end function
+
+    function orthoslip_contact_solve_cycles_with_options(k, o, q_amp_over_p, max_cycles, out) &
+         bind(c, name="orthoslip_contact_solve_cycles_with_options") result(status)
+      import :: c_int, c_double, c_size_t, c_ptr
+      type(c_ptr), value :: k
+      type(c_ptr), value :: o
+      real(c_double), value :: q_amp_over_p
+      integer(c_size_t), value :: max_cycles
+      type(c_ptr), intent(out) :: out
+      integer(c_int) :: status
+    end function
+
+    subroutine orthoslip_cycles_free(cy) bind(c, name="orthoslip_cycles_free")
+      import :: c_ptr
+      type(c_ptr), value :: cy
+    end subroutine
+
+    function orthoslip_cycles_count(cy, n, steady) &
+         bind(c, name="orthoslip_cycles_count") result(status)
+      import :: c_int, c_size_t, c_ptr
+      type(c_ptr), value :: cy
+      integer(c_size_t), intent(out) :: n
+      integer(c_int), intent(out) :: steady
+      integer(c_int) :: status
+    end function
+
+    function orthoslip_cycles_method(cy, used) &
+         bind(c, name="orthoslip_cycles_method") result(status)
+      import :: c_int, c_ptr
+      type(c_ptr), value :: cy
+      integer(c_int), intent(out) :: used
+      integer(c_int) :: status
+    end function
+
+    function orthoslip_cycles_state(cy, state) &
+         bind(c, name="orthoslip_cycles_state") result(status)
+      import :: c_int, c_ptr
+      type(c_ptr), value :: cy
+      integer(c_int), intent(out) :: state
+      integer(c_int) :: status
+    end function
+
+    function orthoslip_cycles_dissipated_energy(cy, cycle, w) &
+         bind(c, name="orthoslip_cycles_dissipated_energy") result(status)
+      import :: c_int, c_double, c_size_t, c_ptr
+      type(c_ptr), value :: cy
+      integer(c_size_t), value :: cycle
+      real(c_double), intent(out) :: w
+      integer(c_int) :: status
+    end function
+
+    function orthoslip_cycles_dissipated_energy_error(cy, cycle, err) &
+         bind(c, name="orthoslip_cycles_dissipated_energy_error") result(status)
+      import :: c_int, c_double, c_size_t, c_ptr
+      type(c_ptr), value :: cy
+      integer(c_size_t), value :: cycle
+      real(c_double), intent(out) :: err
+      integer(c_int) :: status
+    end function
+
+    function orthoslip_cycles_first_loading_energy(cy, w, err) &
+         bind(c, name="orthoslip_cycles_first_loading_energy") result(status)
+      import :: c_int, c_double, c_ptr
+      type(c_ptr), value :: cy
+      real(c_double), intent(out) :: w
+      real(c_double), intent(out) :: err
+      integer(c_int) :: status
+    end function
+
+    function orthoslip_cycles_slip_amplitude(cy, cycle, x, n, amp) &
+         bind(c, name="orthoslip_cycles_slip_amplitude") result(status)
+      import :: c_int, c_double, c_size_t, c_ptr
+      type(c_ptr), value :: cy
+      integer(c_size_t), value :: cycle
+      real(c_double), intent(in) :: x(*)
+      integer(c_size_t), value :: n
+      real(c_double), intent(out) :: amp(*)
+      integer(c_int) :: status
+    end function
+
+    function orthoslip_cycles_slip_amplitude_error(cy, cycle, err) &
+         bind(c, name="orthoslip_cycles_slip_amplitude_error") result(status)
+      import :: c_int, c_double, c_size_t, c_ptr
+      type(c_ptr), value :: cy
+      integer(c_size_t), value :: cycle
+      real(c_double), intent(out) :: err
+      integer(c_int) :: status
+    end function
+
+    function orthoslip_cycles_ruiz(cy, cycle, x, n, f1, f2) &
+         bind(c, name="orthoslip_cycles_ruiz") result(status)
+      import :: c_int, c_double, c_size_t, c_ptr
+      type(c_ptr), value :: cy
+      integer(c_size_t), value :: cycle
+      real(c_double), intent(in) :: x(*)
+      integer(c_size_t), value :: n
+      real(c_double), intent(out) :: f1(*)
+      real(c_double), intent(out) :: f2(*)
+      integer(c_int) :: status
+    end function
+
+    function orthoslip_cycles_stress_peaks(cy, cycle, x, n, tau_max, sxx_max) &
+         bind(c, name="orthoslip_cycles_stress_peaks") result(status)
+      import :: c_int, c_double, c_size_t, c_ptr
+      type(c_ptr), value :: cy
+      integer(c_size_t), value :: cycle
+      real(c_double), intent(in) :: x(*)
+      integer(c_size_t), value :: n
+      real(c_double), intent(out) :: tau_max(*)
+      real(c_double), intent(out) :: sxx_max(*)
+      integer(c_int) :: status
+    end function
+
+    function orthoslip_cycles_ruiz_peaks(cy, cycle, f1_max, x_f1, f2_max, x_f2, err) &
+         bind(c, name="orthoslip_cycles_ruiz_peaks") result(status)
+      import :: c_int, c_double, c_size_t, c_ptr
+      type(c_ptr), value :: cy
+      integer(c_size_t), value :: cycle
+      real(c_double), intent(out) :: f1_max
+      real(c_double), intent(out) :: x_f1
+      real(c_double), intent(out) :: f2_max
+      real(c_double), intent(out) :: x_f2
+      real(c_double), intent(out) :: err(*)
+      integer(c_int) :: status
+    end function
+
+    function orthoslip_cycles_stick_zones(cy, cycle, c1_minus, c2_minus, c1_plus, c2_plus, err) &
+         bind(c, name="orthoslip_cycles_stick_zones") result(status)
+      import :: c_int, c_double, c_size_t, c_ptr
+      type(c_ptr), value :: cy
+      integer(c_size_t), value :: cycle
+      real(c_double), intent(out) :: c1_minus
+      real(c_double), intent(out) :: c2_minus
+      real(c_double), intent(out) :: c1_plus
+      real(c_double), intent(out) :: c2_plus
+      real(c_double), intent(out) :: err
+      integer(c_int) :: status
+    end function
+
+    function orthoslip_cycles_loop_length(cy, cycle, len) &
+         bind(c, name="orthoslip_cycles_loop_length") result(status)
+      import :: c_int, c_size_t, c_ptr
+      type(c_ptr), value :: cy
+      integer(c_size_t), value :: cycle
+      integer(c_size_t), intent(out) :: len
+      integer(c_int) :: status
+    end function
+
+    function orthoslip_cycles_loop(cy, cycle, len, q_over_p, u) &
+         bind(c, name="orthoslip_cycles_loop") result(status)
+      import :: c_int, c_double, c_size_t, c_ptr
+      type(c_ptr), value :: cy
+      integer(c_size_t), value :: cycle
+      integer(c_size_t), value :: len
+      real(c_double), intent(out) :: q_over_p(*)
+      real(c_double), intent(out) :: u(*)
+      integer(c_int) :: status
+    end function
+
+    function orthoslip_cycles_energy_balance(cy, cycle, loop_work, normal_work, energy_change, residual) &
+         bind(c, name="orthoslip_cycles_energy_balance") result(status)
+      import :: c_int, c_double, c_size_t, c_ptr
+      type(c_ptr), value :: cy
+      integer(c_size_t), value :: cycle
+      real(c_double), intent(out) :: loop_work
+      real(c_double), intent(out) :: normal_work
+      real(c_double), intent(out) :: energy_change
+      real(c_double), intent(out) :: residual
+      integer(c_int) :: status
+    end function
+
+    function orthoslip_cycles_step(cy, cycle, step, q_over_p, u, c1, c2) &
+         bind(c, name="orthoslip_cycles_step") result(status)
+      import :: c_int, c_double, c_size_t, c_ptr
+      type(c_ptr), value :: cy
+      integer(c_size_t), value :: cycle
+      integer(c_size_t), value :: step
+      real(c_double), intent(out) :: q_over_p
+      real(c_double), intent(out) :: u
+      real(c_double), intent(out) :: c1
+      real(c_double), intent(out) :: c2
+      integer(c_int) :: status
+    end function
+
+    function orthoslip_cycles_step_tractions(cy, cycle, step, x, n, p, q, zone) &
+         bind(c, name="orthoslip_cycles_step_tractions") result(status)
+      import :: c_int, c_double, c_size_t, c_ptr
+      type(c_ptr), value :: cy
+      integer(c_size_t), value :: cycle
+      integer(c_size_t), value :: step
+      real(c_double), intent(in) :: x(*)
+      integer(c_size_t), value :: n
+      real(c_double), intent(out) :: p(*)
+      real(c_double), intent(out) :: q(*)
+      integer(c_int), intent(out) :: zone(*)
       integer(c_int) :: status
     end function
 

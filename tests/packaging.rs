@@ -79,6 +79,8 @@ struct SceneOutput {
     consumer: String,
     c: f64,
     table: Vec<[f64; 3]>,
+    /// The fretting lines: the cycle count and the first cycle's dissipation.
+    fretting: [f64; 2],
 }
 
 fn parse_scene(consumer: &str, output: &str) -> SceneOutput {
@@ -105,10 +107,15 @@ fn parse_scene(consumer: &str, output: &str) -> SceneOutput {
         })
         .collect();
     assert_eq!(table.len(), TABLE_ROWS, "{consumer}: p, q table rows");
+    let fretting = [
+        labelled(consumer, output, "fretting cycles = "),
+        labelled(consumer, output, "fretting W1 = "),
+    ];
     SceneOutput {
         consumer: consumer.into(),
         c,
         table,
+        fretting,
     }
 }
 
@@ -381,14 +388,29 @@ fn install_and_consume() {
         "the README's C/CMake, pkg-config, C++ and Fortran snippets each print c"
     );
 
-    // 5. Every consumer printed the same numbers.
+    // 5. Every consumer printed the same numbers, and the fretting lines are the Rust
+    // library's (through C, the C++ wrapper and the Fortran bindings).
     let reference = &scenes[0];
+    let mut contact = orthoslip::Contact::new(
+        orthoslip::Material::plane_stress(181e9, 10.3e9, 7.17e9, 0.28).unwrap(),
+    );
+    contact.set_friction(0.3).unwrap();
+    let options = orthoslip::fretting::CycleOptions {
+        panels: 32,
+        steps: 4,
+        ..Default::default()
+    };
+    let run = orthoslip::fretting::Fretting::solve(&contact, 0.6 * 0.3, &options).unwrap();
+    let fretting = [run.cycles.len() as f64, run.cycles[0].dissipation.value];
     for (i, &c) in readme_c.iter().enumerate() {
         assert_close(&format!("README snippet {i} c"), reference.c, c);
     }
     for scene in &scenes {
         println!("{:>22}: c = {:.17}", scene.consumer, scene.c);
         assert_close(&format!("{} c", scene.consumer), reference.c, scene.c);
+        for (i, (&v, &r)) in scene.fretting.iter().zip(&fretting).enumerate() {
+            assert_close(&format!("{} fretting line {i}", scene.consumer), r, v);
+        }
         for (row, (mine, theirs)) in scene.table.iter().zip(&reference.table).enumerate() {
             for (col, (&v, &r)) in mine.iter().zip(theirs).enumerate() {
                 assert_close(
