@@ -474,11 +474,11 @@ fn gap(a: f64, b: f64) -> f64 {
 }
 
 /// The largest gap between node values of a fine profile and a check run's profile, read at
-/// the fine nodes (piecewise constant: a coarse panel covers `ratio` fine ones).
-fn profile_gap(fine: &[f64], check: &[f64], ratio: usize) -> f64 {
+/// the fine nodes (piecewise constant: the check run's panel containing each fine node).
+fn profile_gap(fine: &[f64], nodes: &[f64], check: &[f64]) -> f64 {
     fine.iter()
-        .enumerate()
-        .map(|(i, f)| gap(*f, check[i / ratio]))
+        .zip(nodes)
+        .map(|(f, &x)| gap(*f, check[panel_index(check.len(), x)]))
         .fold(0.0, f64::max)
 }
 
@@ -486,7 +486,6 @@ fn profile_gap(fine: &[f64], check: &[f64], ratio: usize) -> f64 {
 struct Check {
     raws: Vec<Raw>,
     first: f64,
-    ratio: usize,
 }
 
 impl Fretting {
@@ -528,9 +527,9 @@ impl Fretting {
             .collect();
         let first_w = fine.first.iter().map(|st| st.dissipation).sum::<f64>() * unit;
         // The check runs: half the panels, half the steps (each for the same cycles).
-        let checks: Vec<Option<Check>> = [(n / 2, s, 2), (n, s / 2, 1)]
+        let checks: Vec<Option<Check>> = [(n / 2, s), (n, s / 2)]
             .into_iter()
-            .map(|(nc, sc, ratio)| {
+            .map(|(nc, sc)| {
                 let r = run(&k, nc, sc, q_amp_over_p, count, None).ok()?;
                 let stress = SurfaceStress::new(contact, &r.nodes, r.h);
                 Some(Check {
@@ -540,7 +539,6 @@ impl Fretting {
                         .map(|(st, c)| raw(st, c, sc, &r.nodes, &stress, unit))
                         .collect(),
                     first: r.first.iter().map(|st| st.dissipation).sum::<f64>() * unit,
-                    ratio,
                 })
             })
             .collect();
@@ -565,8 +563,9 @@ impl Fretting {
                     value: d,
                     error: err(&|ch| gap(d, ch.raws[i].dissipation)),
                 };
-                let slip_amplitude_error =
-                    err(&|ch| profile_gap(&r.slip_amplitude, &ch.raws[i].slip_amplitude, ch.ratio));
+                let slip_amplitude_error = err(&|ch| {
+                    profile_gap(&r.slip_amplitude, &fine.nodes, &ch.raws[i].slip_amplitude)
+                });
                 let peak_of = |pk: (f64, f64), which: fn(&Raw) -> (f64, f64)| Peak {
                     value: pk.0,
                     x: pk.1,
@@ -644,20 +643,23 @@ impl Fretting {
     ///
     /// Errors: `InvalidArgument` for x NaN or outside [-1, 1].
     pub fn at(&self, profile: &[f64], x: f64) -> Result<f64> {
-        panel_value(profile, self.h, x)
+        panel_value(profile, x)
     }
 }
 
 /// The panel value at x of a profile on 2n uniform panels of [-1, 1].
-pub(crate) fn panel_value(profile: &[f64], h: f64, x: f64) -> Result<f64> {
+pub(crate) fn panel_value(profile: &[f64], x: f64) -> Result<f64> {
     if !(-1.0..=1.0).contains(&x) {
         return Err(Error::InvalidArgument(format!(
             "x = {x} is not on the contact [-1, 1]"
         )));
     }
-    let m = profile.len();
-    let i = (((x + 1.0) / h).floor() as usize).min(m - 1);
-    Ok(profile[i])
+    Ok(profile[panel_index(profile.len(), x)])
+}
+
+/// The panel of m uniform panels on [-1, 1] that contains x in [-1, 1] (x = 1: the last).
+fn panel_index(m: usize, x: f64) -> usize {
+    (((x + 1.0) * m as f64 / 2.0).floor() as usize).min(m - 1)
 }
 
 /// A load path an FE code scripts: the normal load P, then Q moved monotonically to one value
@@ -754,7 +756,11 @@ impl LoadPath {
         let h = self.fine.h();
         SAFETY
             * (0..f.p.len())
-                .map(|i| h * ((f.p[i] - g.p[i / 2]).abs() + (f.q[i] - g.q[i / 2]).abs()))
+                .zip(self.fine.nodes())
+                .map(|(i, x)| {
+                    let j = panel_index(g.p.len(), x);
+                    h * ((f.p[i] - g.p[j]).abs() + (f.q[i] - g.q[j]).abs())
+                })
                 .sum::<f64>()
     }
 
@@ -778,7 +784,7 @@ impl LoadPath {
 
     /// The panel value at x in [-1, 1] of a profile at the nodes (see [`Fretting::at`]).
     pub fn at(&self, profile: &[f64], x: f64) -> Result<f64> {
-        panel_value(profile, self.fine.h(), x)
+        panel_value(profile, x)
     }
 }
 

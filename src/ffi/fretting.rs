@@ -104,7 +104,6 @@ unsafe fn check_points(x: *const f64, n: usize) -> Result<(), Failure> {
 /// # Safety
 /// `x` must be NULL or valid for n reads; each output NULL or valid for n writes.
 unsafe fn sample<const K: usize>(
-    h: f64,
     x: *const f64,
     n: usize,
     profiles: [&[f64]; K],
@@ -120,7 +119,7 @@ unsafe fn sample<const K: usize>(
         for i in 0..n {
             let xi = *x.add(i);
             for (profile, (ptr, _)) in profiles.iter().zip(outs) {
-                *ptr.add(i) = crate::fretting::panel_value(profile, h, xi)?;
+                *ptr.add(i) = crate::fretting::panel_value(profile, xi)?;
             }
         }
     }
@@ -141,7 +140,6 @@ fn zone_code(z: Zone) -> c_int {
 /// As [`sample`]; `zone` NULL or valid for n writes.
 unsafe fn point_tractions(
     pt: &PathPoint,
-    h: f64,
     x: *const f64,
     n: usize,
     p: *mut f64,
@@ -158,9 +156,9 @@ unsafe fn point_tractions(
         let zones: Vec<f64> = pt.zones.iter().map(|z| zone_code(*z) as f64).collect();
         for i in 0..n {
             let xi = *x.add(i);
-            let pi = crate::fretting::panel_value(&pt.p, h, xi)?;
-            let qi = crate::fretting::panel_value(&pt.q, h, xi)?;
-            let zi = crate::fretting::panel_value(&zones, h, xi)? as c_int;
+            let pi = crate::fretting::panel_value(&pt.p, xi)?;
+            let qi = crate::fretting::panel_value(&pt.q, xi)?;
+            let zi = crate::fretting::panel_value(&zones, xi)? as c_int;
             *p.add(i) = pi;
             *q.add(i) = qi;
             *zone.add(i) = zi;
@@ -474,7 +472,7 @@ pub unsafe extern "C" fn orthoslip_history_tractions(
 ) -> orthoslip_status {
     run("orthoslip_history_tractions", || unsafe {
         let path = &deref(h, "h")?.inner;
-        point_tractions(&path.point(), path.h(), x, n, p, q, zone)
+        point_tractions(&path.point(), x, n, p, q, zone)
     })
 }
 
@@ -731,7 +729,7 @@ pub unsafe extern "C" fn orthoslip_cycles_slip_amplitude(
     run("orthoslip_cycles_slip_amplitude", || unsafe {
         let handle = deref(cy, "cy")?;
         let c = cycle_at(handle, cycle)?;
-        sample(handle.inner.h, x, n, [&c.slip_amplitude], [(amp, "amp")])
+        sample(x, n, [&c.slip_amplitude], [(amp, "amp")])
     })
 }
 
@@ -780,13 +778,7 @@ pub unsafe extern "C" fn orthoslip_cycles_ruiz(
     run("orthoslip_cycles_ruiz", || unsafe {
         let handle = deref(cy, "cy")?;
         let c = cycle_at(handle, cycle)?;
-        sample(
-            handle.inner.h,
-            x,
-            n,
-            [&c.f1, &c.f2],
-            [(f1, "f1"), (f2, "f2")],
-        )
+        sample(x, n, [&c.f1, &c.f2], [(f1, "f1"), (f2, "f2")])
     })
 }
 
@@ -814,7 +806,6 @@ pub unsafe extern "C" fn orthoslip_cycles_stress_peaks(
         let handle = deref(cy, "cy")?;
         let c = cycle_at(handle, cycle)?;
         sample(
-            handle.inner.h,
             x,
             n,
             [&c.tau_max, &c.sxx_max],
@@ -1071,6 +1062,6 @@ pub unsafe extern "C" fn orthoslip_cycles_step_tractions(
     run("orthoslip_cycles_step_tractions", || unsafe {
         let handle = deref(cy, "cy")?;
         let pt = step_at(handle, cycle, step)?;
-        point_tractions(pt, handle.inner.h, x, n, p, q, zone)
+        point_tractions(pt, x, n, p, q, zone)
     })
 }

@@ -228,3 +228,27 @@ fn bad_input_is_refused() {
     assert_eq!(CycleMethod::from_code(0), Some(CycleMethod::LcpHistory));
     assert_eq!(CycleMethod::from_code(1), None);
 }
+
+/// An odd number of panels (the half-panel check grid then does not nest in the full one):
+/// the estimates are read at the fine nodes' positions and stay finite.
+#[test]
+fn odd_panel_counts_are_served() {
+    let c = ply_contact(0.3);
+    let opt = CycleOptions {
+        panels: 9,
+        steps: 3,
+        max_cycles: 2,
+        ..CycleOptions::default()
+    };
+    let f = Fretting::solve(&c, 0.18, &opt).unwrap();
+    assert_eq!(f.nodes.len(), 18);
+    let cy = &f.cycles[0];
+    assert!(cy.slip_amplitude_error.is_finite() && cy.dissipation.error.is_finite());
+    let mut path = LoadPath::new(&c, &opt).unwrap();
+    path.load(0.1).unwrap();
+    assert!(path.traction_error().is_finite() && path.traction_error() > 0.0);
+    assert_eq!(panel_index(18, -1.0), 0);
+    assert_eq!(panel_index(18, 1.0), 17);
+    assert_eq!(panel_index(18, 0.0), 9);
+    assert_eq!(panel_index(8, 0.999), 7);
+}
