@@ -182,13 +182,14 @@ static void energy_balance(size_t panels, size_t steps)
     orthoslip_contact_free(k);
 }
 
-/* Q -> -Q mirrors the path. */
+/* Q -> -Q mirrors the path (at points off the panel boundaries, whose panel is the one on
+ * their right). */
 static void mirror(size_t panels)
 {
     orthoslip_contact *k = contact_new(1.0, 0.2, 1.3, 1.1, 0.4);
     orthoslip_cycle_options *o = options_new(panels, 3);
     orthoslip_history *up = NULL, *down = NULL;
-    double x[4] = {-0.77, -0.3, 0.21, 0.62}, mx[4], p[4], q[4], pm[4], qm[4];
+    double x[4] = {-0.77, -0.31, 0.21, 0.62}, mx[4], p[4], q[4], pm[4], qm[4];
     double a1, a2, b1, b2, e, qa, ua, ma, qb, ub, mb;
     int za[4], zb[4], i;
     for (i = 0; i < 4; i++) mx[i] = -x[i];
