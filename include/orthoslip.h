@@ -781,7 +781,7 @@ orthoslip_status orthoslip_history_traction_error_estimate(const orthoslip_histo
  * On success `*out` owns a new handle, to be released with `orthoslip_cycles_free`.
  * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER, ORTHOSLIP_ERROR_INVALID_ARGUMENT
  * (q_amp not finite or <= 0; q_amp >= mu: gross sliding, refused; mu = 0; max_cycles 0
- * or > 10000), ORTHOSLIP_ERROR_NO_ADMISSIBLE_SOLUTION (the pressure turns negative on the
+ * or > 1000), ORTHOSLIP_ERROR_NO_ADMISSIBLE_SOLUTION (the pressure turns negative on the
  * path: lift-off, outside this model) or ORTHOSLIP_ERROR_NO_CONVERGENCE; on failure `*out`
  * is set to NULL.
  *

@@ -62,7 +62,7 @@ pub struct FrettingArgs {
     pub mu: f64,
     #[command(flatten)]
     pub amplitude: AmplitudeArgs,
-    /// Cycles at most (1 ..= 10000).
+    /// Cycles at most (1 ..= 1000).
     #[arg(long, value_name = "N", default_value_t = 10)]
     pub max_cycles: usize,
     /// Panels per half-width of the grid (8 ..= 2000; cost grows like N^3).

@@ -207,6 +207,10 @@ fn bad_input_is_refused() {
             ..opt
         },
         CycleOptions {
+            max_cycles: 1001,
+            ..opt
+        },
+        CycleOptions {
             repeat_tolerance: f64::NAN,
             ..opt
         },

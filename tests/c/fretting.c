@@ -247,6 +247,9 @@ static void bad_input(void)
     check_message("orthoslip_contact_solve_cycles", "mu > 0");
     CHECK_STATUS(orthoslip_contact_solve_cycles(k, 0.1, 0, &cy),
                  ORTHOSLIP_ERROR_INVALID_ARGUMENT);
+    CHECK_STATUS(orthoslip_contact_solve_cycles(k, 0.1, 1001, &cy),
+                 ORTHOSLIP_ERROR_INVALID_ARGUMENT);
+    check_message("orthoslip_contact_solve_cycles", "cycle limit");
     CHECK(cy == NULL);
     CHECK_STATUS(orthoslip_contact_solve_cycles(NULL, 0.1, 2, &cy),
                  ORTHOSLIP_ERROR_NULL_POINTER);
