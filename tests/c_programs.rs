@@ -86,7 +86,9 @@ fn compiler(lang: Lang) -> Command {
         .arg("-I")
         .arg(manifest_dir().join("include"))
         .arg("-I")
-        .arg(manifest_dir().join("tests/c"));
+        .arg(manifest_dir().join("tests/c"))
+        .arg("-I")
+        .arg(manifest_dir().join("c_examples")); // orthoslip.hpp, for the C++ builds
     cmd
 }
 

@@ -386,6 +386,64 @@ static void outputs(size_t panels, size_t steps)
     orthoslip_contact_free(k);
 }
 
+#ifdef __cplusplus
+/* The C++ build also checks the RAII wrapper (c_examples/orthoslip.hpp): the same numbers as
+ * the C calls, and bad input thrown as orthoslip::error with the status. */
+#include "orthoslip.hpp"
+
+static void cxx_wrapper(size_t panels, size_t steps)
+{
+    const auto ply = orthoslip::material::plane_stress(181e9, 10.3e9, 7.17e9, 0.28);
+    orthoslip::contact k(ply);
+    k.friction(0.3);
+    orthoslip::cycle_options o;
+    o.panels(panels).steps(steps);
+    const auto cy = k.solve_cycles(0.18, 4, o);
+    CHECK(cy.count() == 2 && cy.state() == ORTHOSLIP_CYCLE_SHAKEDOWN);
+    orthoslip_cycles *raw = NULL;
+    double w = 0.0, err = 0.0, amp = 0.0, f1 = 0.0, f2 = 0.0, x = -0.99;
+    CHECK_OK(orthoslip_contact_solve_cycles_with_options(k.get(), o.get(), 0.18, 4, &raw));
+    CHECK_OK(orthoslip_cycles_dissipated_energy(raw, 0, &w));
+    CHECK_OK(orthoslip_cycles_dissipated_energy_error(raw, 0, &err));
+    CHECK_OK(orthoslip_cycles_slip_amplitude(raw, 0, &x, 1, &amp));
+    CHECK_OK(orthoslip_cycles_ruiz(raw, 0, &x, 1, &f1, &f2));
+    const auto e = cy.dissipated_energy(0);
+    CHECK(e.value == w && e.error == err);
+    CHECK(cy.slip_amplitude(0, {x})[0] == amp);
+    const auto r = cy.ruiz(0, {x});
+    CHECK(r.first[0] == f1 && r.second[0] == f2);
+    const auto loop = cy.loop(0);
+    CHECK(loop.q_over_p.size() == 4 * steps + 1 && loop.q_over_p.front() == 0.18);
+    const auto zones = cy.stick_zones(0);
+    CHECK(zones.first.c2 == 1.0 && zones.second.c1 == -1.0);
+    orthoslip_cycles_free(raw);
+
+    auto h = k.history(o);
+    h.load(0.1);
+    const auto z = h.stick_zone();
+    CHECK(z.c1 == -1.0 && z.c2 < 1.0 && z.error >= 0.0);
+    const auto t = h.at({-0.5, 0.5});
+    /* the trailing side sticks, the leading zone slips in -x with q = +mu p */
+    CHECK(t.p.size() == 2 && t.zone[0] == 0 && t.zone[1] == -1);
+    CHECK_LE(fabs(t.q[1] - 0.3 * t.p[1]), 1e-10);
+    CHECK(h.dissipated_energy().value > 0.0);
+    int thrown = 0;
+    try {
+        h.load(0.3); /* gross sliding */
+    } catch (const orthoslip::error &ex) {
+        thrown = ex.status() == ORTHOSLIP_ERROR_INVALID_ARGUMENT;
+    }
+    CHECK(thrown);
+    thrown = 0;
+    try {
+        (void)k.solve_cycles(-0.1, 4, o);
+    } catch (const orthoslip::error &ex) {
+        thrown = ex.status() == ORTHOSLIP_ERROR_INVALID_ARGUMENT;
+    }
+    CHECK(thrown);
+}
+#endif
+
 int main(void)
 {
     size_t panels = test_quick() ? 16 : 40, steps = test_quick() ? 2 : 4;
@@ -394,6 +452,9 @@ int main(void)
     mirror(panels);
     bad_input();
     outputs(test_quick() ? 16 : 32, steps);
+#ifdef __cplusplus
+    cxx_wrapper(test_quick() ? 16 : 32, steps);
+#endif
     printf("fretting: ok\n");
     return 0;
 }
