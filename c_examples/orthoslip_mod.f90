@@ -58,7 +58,7 @@ module orthoslip_mod
        orthoslip_cycles_slip_amplitude_error, orthoslip_cycles_ruiz, &
        orthoslip_cycles_stress_peaks, orthoslip_cycles_ruiz_peaks, &
        orthoslip_cycles_stick_zones, orthoslip_cycles_loop_length, &
-       orthoslip_cycles_loop, orthoslip_cycles_energy_balance, &
+       orthoslip_cycles_loop, orthoslip_cycles_loop_error, orthoslip_cycles_energy_balance, &
        orthoslip_cycles_step, orthoslip_cycles_step_tractions
   public :: last_error_message, status_name, version
 
@@ -566,6 +566,16 @@ module orthoslip_mod
       integer(c_size_t), value :: len
       real(c_double), intent(out) :: q_over_p(*)
       real(c_double), intent(out) :: u(*)
+      integer(c_int) :: status
+    end function
+
+    function orthoslip_cycles_loop_error(cy, cycle, u_err, work_err) &
+         bind(c, name="orthoslip_cycles_loop_error") result(status)
+      import :: c_int, c_double, c_size_t, c_ptr
+      type(c_ptr), value :: cy
+      integer(c_size_t), value :: cycle
+      real(c_double), intent(out) :: u_err
+      real(c_double), intent(out) :: work_err
       integer(c_int) :: status
     end function
 

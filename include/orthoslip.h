@@ -1094,6 +1094,22 @@ orthoslip_status orthoslip_cycles_step_tractions(const orthoslip_cycles *cy,
                                                  double *q,
                                                  int *zone);
 
+/**
+ * Writes the error estimates of cycle `cycle`'s loop: of the punch displacement u at its
+ * turning points -Q* and +Q* (the larger, per P/E) and of its area, the work of Q (P^2/E).
+ *
+ * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER or ORTHOSLIP_ERROR_INVALID_ARGUMENT
+ * (cycle >= count); nothing written on failure.
+ *
+ * # Safety
+ * `cy` must be NULL or a live handle; `u_err` and `work_err` NULL or valid for one write
+ * each.
+ */
+orthoslip_status orthoslip_cycles_loop_error(const orthoslip_cycles *cy,
+                                             size_t cycle,
+                                             double *u_err,
+                                             double *work_err);
+
 #ifdef __cplusplus
 }  // extern "C"
 #endif  // __cplusplus

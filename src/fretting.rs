@@ -204,8 +204,13 @@ pub struct CycleResult {
     pub slip_amplitude_error: f64,
     /// The loop: (Q/P, U) at the cycle's start and after each step (U in P/E).
     pub loop_points: Vec<(f64, f64)>,
+    /// Error estimate of the loop's displacements, the larger at its turning points -Q* and
+    /// +Q* (P/E; the intermediate points lie at different loads in the check runs).
+    pub loop_error: f64,
     /// Work of Q over the cycle, the loop's area by the trapezoidal rule (P^2/E).
     pub loop_work: f64,
+    /// Error estimate of `loop_work`.
+    pub loop_work_error: f64,
     /// Work of P over the cycle, P (V_end - V_start) (P^2/E; p changes with Q when bp > 0).
     pub normal_work: f64,
     /// Change of the elastic energy over the cycle (P^2/E).
@@ -405,6 +410,9 @@ struct Raw {
     f2_peak: (f64, f64),
     stick_at_minus: (f64, f64),
     stick_at_plus: (f64, f64),
+    /// U at -Q* and +Q* (P/E), and the loop's area (P^2/E).
+    turning: [f64; 2],
+    loop_work: f64,
 }
 
 fn peak(v: &[f64], nodes: &[f64]) -> (f64, f64) {
@@ -461,6 +469,9 @@ fn raw(
         f2,
         stick_at_minus: at(2 * steps - 1),
         stick_at_plus: at(4 * steps - 1),
+        turning: [2 * steps - 1, 4 * steps - 1]
+            .map(|i| c.states.get(i).map_or(f64::NAN, |s| s.punch * unit)),
+        loop_work: c.loop_work * unit,
     }
 }
 
@@ -584,8 +595,15 @@ impl Fretting {
                     .into_iter()
                     .fold(0.0, f64::max)
                 });
+                let loop_error = err(&|ch| {
+                    let o = &ch.raws[i];
+                    gap(r.turning[0], o.turning[0]).max(gap(r.turning[1], o.turning[1]))
+                });
+                let loop_work_error = err(&|ch| gap(r.loop_work, ch.raws[i].loop_work));
                 CycleResult {
                     dissipation,
+                    loop_error,
+                    loop_work_error,
                     slip_amplitude_error,
                     f1_peak: peak_of(r.f1_peak, |o| o.f1_peak),
                     f2_peak: peak_of(r.f2_peak, |o| o.f2_peak),

@@ -244,6 +244,13 @@ class Cycles:
                                         ffi.from_buffer("double[]", u)))
         return q, u
 
+    def loop_error(self, cycle: int) -> tuple[float, float]:
+        """Error estimates of the loop: of u at its turning points (P/E) and of its area
+        (P^2/E)."""
+        out = ffi.new("double[2]")
+        check(lib.orthoslip_cycles_loop_error(self._handle, self._cycle(cycle), out, out + 1))
+        return out[0], out[1]
+
     def energy_balance(self, cycle: int) -> EnergyBalance:
         """The cycle's energy balance (P^2/E)."""
         out = ffi.new("double[4]")

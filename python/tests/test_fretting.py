@@ -52,6 +52,8 @@ def test_closed_cycle_dissipates_its_loop_area() -> None:
     assert abs(balance.normal_work) + abs(balance.energy_change) < 1e-8
     w, err = cy.dissipated_energy[last], cy.dissipated_energy_error[last]
     assert w > 1e-3 and abs(area - w) <= err
+    u_err, work_err = cy.loop_error(last)
+    assert 0.0 < u_err < 1.0 and 0.0 < work_err < 1.0
 
 
 def test_ply_cycle_outputs() -> None:

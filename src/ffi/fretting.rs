@@ -1065,3 +1065,28 @@ pub unsafe extern "C" fn orthoslip_cycles_step_tractions(
         point_tractions(pt, x, n, p, q, zone)
     })
 }
+
+/// Writes the error estimates of cycle `cycle`'s loop: of the punch displacement u at its
+/// turning points -Q* and +Q* (the larger, per P/E) and of its area, the work of Q (P^2/E).
+///
+/// Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER or ORTHOSLIP_ERROR_INVALID_ARGUMENT
+/// (cycle >= count); nothing written on failure.
+///
+/// # Safety
+/// `cy` must be NULL or a live handle; `u_err` and `work_err` NULL or valid for one write
+/// each.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn orthoslip_cycles_loop_error(
+    cy: *const orthoslip_cycles,
+    cycle: usize,
+    u_err: *mut f64,
+    work_err: *mut f64,
+) -> orthoslip_status {
+    run("orthoslip_cycles_loop_error", || unsafe {
+        let c = cycle_at(deref(cy, "cy")?, cycle)?;
+        write_all(
+            [(u_err, "u_err"), (work_err, "work_err")],
+            [c.loop_error, c.loop_work_error],
+        )
+    })
+}

@@ -51,6 +51,32 @@ fn ply_cycle_meets_the_extrapolated_references_within_its_estimates() {
     assert!(w2.value <= 1e-12 && w2.error <= 1e-12, "W2 = {w2:?}");
     assert!(f.cycles[1].slip_amplitude.iter().all(|&a| a == 0.0));
     assert_eq!(f.cycles[1].stick_at_minus, (-1.0, 1.0));
+    // the loop's turning points and area against a finer run (n = 200, 20 steps, one cycle,
+    // no check runs): within the estimates
+    let fine = run(&c.coupling(), 200, 20, 0.18, 1, None).unwrap();
+    let (_, cycle) = &fine.cycles[0];
+    let a = &f.cycles[0];
+    for (i, j) in [(2 * 10 - 1, 2 * 20 - 1), (4 * 10 - 1, 4 * 20 - 1)] {
+        let d = (a.path[i].punch - cycle.states[j].punch * unit).abs();
+        assert!(
+            d <= a.loop_error,
+            "U gap {d:e}, estimate {:e}",
+            a.loop_error
+        );
+    }
+    let d = (a.loop_work - cycle.loop_work * unit).abs();
+    assert!(
+        d <= a.loop_work_error,
+        "loop work gap {d:e}, estimate {:e}",
+        a.loop_work_error
+    );
+    println!(
+        "loop: U estimate {:.2e}, work {:.4e} +- {:.2e} (n = 200: {:.4e})",
+        a.loop_error,
+        a.loop_work,
+        a.loop_work_error,
+        cycle.loop_work * unit
+    );
     for cy in &f.cycles {
         // (T9) summed over the cycle, in P^2/E
         assert!(cy.balance_residual.abs() < 1e-15, "{}", cy.balance_residual);

@@ -135,6 +135,13 @@ static void energy_balance(size_t panels, size_t steps)
     CHECK_LE(fabs(nw) + fabs(de), 1e-8);
     CHECK(w > 1e-3);
     CHECK_LE(fabs(area - w), werr);
+    {
+        double ue = -1.0, we = -1.0;
+        CHECK_OK(orthoslip_cycles_loop_error(cy, last, &ue, &we));
+        CHECK(ue > 0.0 && we > 0.0 && we < w);
+        CHECK_STATUS(orthoslip_cycles_loop_error(cy, n, &ue, &we),
+                     ORTHOSLIP_ERROR_INVALID_ARGUMENT);
+    }
     printf("steady slip cycle %zu: W = %.6e +- %.1e P^2/E, loop area %.6e\n", last, w, werr,
            area);
     orthoslip_cycles_free(cy);
