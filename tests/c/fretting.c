@@ -74,6 +74,14 @@ static void uncoupled(size_t panels)
     }
     CHECK_OK(orthoslip_history_dissipated_energy(h, &w, &werr));
     CHECK_LE(w, 1e-9);
+    /* still all stick just below gross sliding, Q = 0.299 P (mu = 0.3) */
+    CHECK_OK(orthoslip_history_load(h, 0.299));
+    CHECK_OK(orthoslip_history_stick_zone(h, &c1, &c2, &err));
+    CHECK(c1 == -1.0 && c2 == 1.0);
+    CHECK_OK(orthoslip_history_tractions(h, x, 5, p, q, zone));
+    for (i = 0; i < 5; i++) CHECK(zone[i] == 0);
+    CHECK_OK(orthoslip_history_dissipated_energy(h, &w, &werr));
+    CHECK_LE(w, 1e-9);
     orthoslip_history_free(h);
 
     /* cycles: nothing slips, shakedown in the first cycle */
