@@ -326,7 +326,7 @@ fn distance(a: &Fixed, b: &Fixed) -> (f64, f64) {
 /// Points per zone of the admissibility check.
 const CHECK_POINTS: usize = 64;
 
-/// Largest rounding noise of the tractions relative to p ([`Fixed::noise`]) an answer may
+/// Largest rounding noise of the tractions relative to p ([`Fixed::eval_with_noise`]) an answer may
 /// carry (R2). The panels' tractions with a white relative noise of 1e-13 added failed GSL's
 /// pointwise check of (E1) in tests/c/coupled_residuals.c (1.06e-8 against 1e-8), with 1e-12
 /// by far (1.2e-7). The spectral answers of that program passed it with noise bounds up to
@@ -335,27 +335,26 @@ const NOISE_MAX: f64 = 1e-13;
 
 /// Whether the answer is admissible, and its rounding noise: p > 0 everywhere and
 /// |q| <= mu p on the stick zone (to 1e-6 relative), at Chebyshev points of each zone; the
-/// noise is the largest of [`Fixed::noise`] there.
+/// noise is the largest of [`Fixed::eval_with_noise`] there.
 fn admissible(f: &Fixed, mu: f64) -> Option<f64> {
     let (c, w) = (f.basis.c, f.basis.w);
     let mut noise = 0.0f64;
     for i in 0..CHECK_POINTS {
         let th = (i as f64 + 0.5) * std::f64::consts::PI / CHECK_POINTS as f64;
         let (xs, xl) = (c * (0.5 * th).sin(), c + w * (0.5 * th).sin().powi(2));
-        let stick = f.at(xs);
-        let slip = f.at(xl);
-        if !(stick.0 > 0.0 && stick.1.abs() <= mu * stick.0 * (1.0 + 1e-6) && slip.0 > 0.0) {
-            return None;
-        }
-        for x in [xs, xl] {
+        let at = |x: f64| {
             let xmc = x - c;
-            let pt = points::Pt {
+            f.eval_with_noise(&points::Pt {
                 x,
                 omx: 1.0 - x,
                 xmc: if xmc == 0.0 { -f64::MIN_POSITIVE } else { xmc },
-            };
-            noise = noise.max(f.noise(&pt));
+            })
+        };
+        let (stick, slip) = (at(xs), at(xl));
+        if !(stick.0 > 0.0 && stick.1.abs() <= mu * stick.0 * (1.0 + 1e-6) && slip.0 > 0.0) {
+            return None;
         }
+        noise = noise.max(stick.2).max(slip.2);
     }
     Some(noise)
 }

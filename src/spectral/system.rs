@@ -312,6 +312,8 @@ pub(crate) fn solve_fixed(k: Constants, c: f64, w: f64, sizes: Sizes) -> Result<
     let mut a = vec![0.0; rows * cols];
     let (mut pv, mut qv, mut hp, mut hq) = (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]);
     let mut r = 0;
+    // each point's p columns, for (R1) after the solve
+    let mut p_rows = Vec::with_capacity((stick.len() + slip.len()) * n);
     for (pt, on_stick) in stick
         .iter()
         .map(|p| (p, true))
@@ -319,6 +321,7 @@ pub(crate) fn solve_fixed(k: Constants, c: f64, w: f64, sizes: Sizes) -> Result<
     {
         basis.tractions_row(pt, &mut pv, &mut qv);
         basis.hilbert_row(pt, &mut hp, &mut hq);
+        p_rows.extend_from_slice(&pv);
         let weight = pt.omx.powf(k.g);
         let row = &mut a[r * cols..(r + 1) * cols];
         for j in 0..n {
@@ -445,12 +448,17 @@ pub(crate) fn solve_fixed(k: Constants, c: f64, w: f64, sizes: Sizes) -> Result<
     // (R1): each row's residual relative to the smallest term of its equation, b mu p in
     // (E1) (|q| <= mu p) and b p in (E2), in the rows' weights
     let mut r = 0;
-    for (pt, on_stick) in stick
+    for (i, (pt, on_stick)) in stick
         .iter()
         .map(|p| (p, true))
         .chain(slip.iter().map(|p| (p, false)))
+        .enumerate()
     {
-        let (p, _) = fixed.eval(pt);
+        let p: f64 = p_rows[i * n..(i + 1) * n]
+            .iter()
+            .zip(&fixed.coef)
+            .map(|(a, b)| a * b)
+            .sum();
         let size = k.b * p * pt.omx.powf(k.g);
         for (eq, scale) in [(true, k.mu), (on_stick, 1.0)] {
             if eq {
@@ -467,44 +475,35 @@ pub(crate) fn solve_fixed(k: Constants, c: f64, w: f64, sizes: Sizes) -> Result<
 impl Fixed {
     /// (p, q) of the reduced problem at a point.
     pub(crate) fn eval(&self, p: &Pt) -> (f64, f64) {
-        let n = self.coef.len();
-        let (mut pv, mut qv) = (vec![0.0; n], vec![0.0; n]);
-        self.basis.tractions_row(p, &mut pv, &mut qv);
-        let dot = |v: &[f64]| v.iter().zip(&self.coef).map(|(a, b)| a * b).sum::<f64>();
-        let p_ = dot(&pv);
-        // q = mu p on the slip zone exactly, not to the rounding of a second sum
-        (
-            p_,
-            if p.xmc < 0.0 {
-                dot(&qv)
-            } else {
-                self.basis.k.mu * p_
-            },
-        )
+        let (p, q, _) = self.eval_with_noise(p);
+        (p, q)
     }
 
-    /// The rounding noise of (p, q) at a point, relative to p: the machine epsilon times
+    /// (p, q) at a point, and their rounding noise relative to p: the machine epsilon times
     /// sum |a_j phi_j(x)| / p(x) for p, and the same for q relative to mu p on the stick zone
     /// (|q| <= mu p there; on the slip zone q = mu p is exact), the larger of the two. The
     /// frame's columns are near-dependent, so its coefficients can be large and cancel
     /// (docs/theory_spectral.md (R2)).
-    pub(crate) fn noise(&self, p: &Pt) -> f64 {
+    pub(crate) fn eval_with_noise(&self, p: &Pt) -> (f64, f64, f64) {
         let n = self.coef.len();
         let (mut pv, mut qv) = (vec![0.0; n], vec![0.0; n]);
         self.basis.tractions_row(p, &mut pv, &mut qv);
-        let sum = |v: &[f64]| {
-            v.iter()
+        let (mut value, mut size) = (0.0, 0.0);
+        for (v, a) in pv.iter().zip(&self.coef) {
+            value += v * a;
+            size += (v * a).abs();
+        }
+        let mu = self.basis.k.mu;
+        // q = mu p on the slip zone exactly, not to the rounding of a second sum
+        let (q, q_size) = if p.xmc < 0.0 {
+            qv.iter()
                 .zip(&self.coef)
-                .map(|(a, b)| (a * b).abs())
-                .sum::<f64>()
-        };
-        let (value, _) = self.eval(p);
-        let q = if p.xmc < 0.0 {
-            sum(&qv) / self.basis.k.mu
+                .fold((0.0, 0.0), |(q, s), (v, a)| (q + v * a, s + (v * a).abs()))
         } else {
-            0.0
+            (mu * value, 0.0)
         };
-        f64::EPSILON * sum(&pv).max(q) / value.abs()
+        let noise = f64::EPSILON * size.max(q_size / mu) / value.abs();
+        (value, q, noise)
     }
 
     /// (p, q) at 0 <= x < 1 (the stick side at x = c).
