@@ -28,20 +28,38 @@ use system::{Fixed, Sizes, solve_fixed};
 
 /// Smallest edge exponent g the bases serve. As g -> 0 (large friction, g ~ 1/(pi b* mu~))
 /// the slip zone's two weights (1 - s)^-g and (1 - s)^-g (1 + s)^g, and the stick zone's
-/// Legendre and P^(g,g) families, become the same functions, and the frame degenerates. With
-/// p and q continuous at c imposed exactly (C2), the levels' traction distance stalled at
-/// 1e-9 .. 1e-8 for g = 0.0195 (b* = 0.75, mu~ = 21.8) and came down to 3e-12 .. 5e-12 at
-/// g = 0.030 (b* = 0.75, mu~ = 14.1), 3e-14 at g = 0.05. Without the constraints the estimate
-/// of c failed by 1.4x at g = 1.7e-4. The difference quotient ((1 + s)^g - 1) / g is the basis
-/// for small g (the panels use it from g < 1e-2); until it is built, the panels answer there.
-const G_MIN: f64 = 0.03;
+/// Legendre and P^(g,g) families, become the same functions, and the frame degenerates:
+/// - with p and q continuous at c imposed exactly (C2), the levels' traction distance
+///   stalled at 1e-9 .. 1e-8 for g = 0.0195 (b* = 0.75, mu~ = 21.8);
+/// - with the rounding-noise bound (R2), the noise stayed at 4e-13 .. 8e-13 at levels 3-10
+///   for g = 0.033 (b* = 0.9217, mu~ = 10.28), and the slow tier's 24 x 24 grid of the
+///   table left 6 points with g = 0.030 .. 0.044 unanswered; from g = 0.05 on it answered
+///   every point.
+///
+/// The difference quotient ((1 + s)^g - 1) / g is the basis for small g (the panels use it
+/// from g < 1e-2); until it is built, the panels answer there.
+const G_MIN: f64 = 0.05;
 
-/// Smallest stick zone the bases serve in this phase: at c = 4.8e-5 (the carbon ply at
-/// mu = 0.1) the answer met its estimates (c to 1e-12 against the table, tractions to 1e-9)
-/// but (E1)'s pointwise residual, relative to mu p, came out at 1.01e-8 (GSL's check in
-/// tests/c/coupled_residuals.c asks 1e-8 at a traction tolerance of 1e-8). Tiny stick zones
-/// are the next phase's (poles towards x = 0 and the full-slip law as the start).
-const C_MIN: f64 = 1e-3;
+/// Thinnest slip zone the bases serve in this phase: on the 24 x 24 grid of the table the
+/// points with 1 - c = 4.1e-6 .. 4.4e-4 went unanswered. At b* = 0.2961, mu~ = 1.55
+/// (1 - c = 3.6e-4) the rounding noise (R2) came down to 1.8e-13 only at level 7
+/// (169 unknowns); at mu~ = 7.8 (1 - c = 6.6e-6) the levels above 3 drifted (sigma from
+/// 1.9e-10 to 4e-8). Thin slip zones are the next phase's (tapered poles, or the
+/// inner/outer split with the bonded family).
+const W_MIN: f64 = 1e-3;
+
+/// Smallest stick zone the bases serve in this phase, the smallest measured: at c = 4.8e-5
+/// (the carbon ply at mu = 0.1) the answer passed GSL's pointwise check in
+/// tests/c/coupled_residuals.c and agreed with the panels' tractions to 4.8e-12
+/// (examples/spectral_timing.rs). (Before the noise bound (R2) the answer there had failed
+/// that check at 1.01e-8.)
+const C_MIN: f64 = 4e-5;
+
+/// Largest b* the bases serve in this phase: towards the auxetic limit b* -> 1 the levels
+/// needed rose (level 3 up to b* = 0.98, 4 at 0.9836, 5 at 0.9865 on the table's grid at
+/// c ~ 3e-4) and at b* = 0.989 (c = 2.9e-4) the rounding noise stayed at 2e-13 .. 3e-13 at
+/// every level from 4 to 10.
+const B_MAX: f64 = 0.985;
 
 /// Levels of the bases' sizes tried in turn ([`Sizes::at`]): the mid-range scenes stop at
 /// levels 2-4; the 1 - c = 2.1e-3 of b* = 0.2857, mu~ = 1 needs 7 for tractions to 1e-10,
@@ -102,10 +120,11 @@ fn sigma_at(k: Constants, lc: f64, sizes: Sizes) -> Option<Level> {
     fixed.sigma.is_finite().then_some(Level { lc, fixed })
 }
 
-/// Whether the bases serve the coupling near the stick edge lc: g >= [`G_MIN`] and
-/// c >= [`C_MIN`].
+/// Whether the bases serve the coupling near the stick edge lc: g >= [`G_MIN`],
+/// b* <= [`B_MAX`], c >= [`C_MIN`] and 1 - c >= [`W_MIN`].
 fn serves(k: Constants, lc: f64) -> bool {
-    k.g >= G_MIN && StickEdge::from_logit(lc).c >= C_MIN
+    let e = StickEdge::from_logit(lc);
+    k.g >= G_MIN && k.b <= B_MAX && e.c >= C_MIN && e.one_minus_c >= W_MIN
 }
 
 /// The root of sigma(lc) at `sizes` by the chord method from `start`: steps -sigma / slope
