@@ -10,7 +10,7 @@ mod support;
 use std::time::{Duration, Instant};
 
 use orthoslip::Result;
-use orthoslip::coupled::{CoupledSolution, solve_spectral_to, solve_to};
+use orthoslip::coupled::{CoupledSolution, solve_panels_to, solve_to};
 use orthoslip::problem::{Profile, traction_distance};
 
 /// Median wall time over repeated solves (at least 5 runs and 0.3 s, at most 200).
@@ -51,8 +51,8 @@ fn main() {
         for (name, m) in support::scene_materials() {
             for mu in [0.1, 0.3, 1.0] {
                 let k = m.coupling(mu);
-                let (a, sa) = time(|| solve_spectral_to(&k, tol, ttol));
-                let (b, sb) = time(|| solve_to(&k, tol, ttol));
+                let (a, sa) = time(|| solve_to(&k, tol, ttol));
+                let (b, sb) = time(|| solve_panels_to(&k, tol, ttol));
                 let (a, b) = (a.as_secs_f64(), b.as_secs_f64());
                 let row = match (&sa, &sb) {
                     (Ok(s), Ok(p)) => {

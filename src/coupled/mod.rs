@@ -818,24 +818,24 @@ const CONDITIONING_NOTE_BELOW: f64 = 1e-3;
 
 /// Solves (E1)-(E4) for `k` to |c - c_exact| <= tol and a traction error (the norm of
 /// [`crate::problem::traction_distance`]) <= traction_tol (+infinity: c alone). A limit
-/// regime is taken where its bounds meet both; else the panels, whose stopping rule asks for
+/// regime is taken where its bounds meet both; else the spectral solver
+/// ([`spectral_from_table`]) where it serves the coupling and meets both; else the panels,
+/// whose stopping rule asks for
 /// c (and a relative traction agreement of about 100 tol) and whose traction estimate came
 /// out at up to [`TRACTION_PER_C`] times their tolerance on c: they are run to
 /// min(tol, traction_tol / TRACTION_PER_C), and where the traction estimate still misses
 /// traction_tol re-run with the tolerance on c scaled down by the ratio missed (twice over),
 /// down to [`TIGHTEST`], unless they stopped at their largest order ([`at_largest_order`]).
 pub fn solve_to(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSolution> {
-    solve_with(k, tol, traction_tol, false)
+    solve_with(k, tol, traction_tol, true)
 }
 
-/// [`solve_to`] with the spectral solver ([`crate::spectral`]) tried before the panels where
-/// the stick edge is tabulated: the rebuild's first phase, not yet COUPLED's default (see
-/// docs/theory_spectral.md §4: GSL's pointwise residual check of (E1) asks more of its
-/// tractions than its traction estimate gives); for `examples/spectral_timing.rs` and the
-/// tests.
+/// [`solve_to`] without the spectral solver: the panels (and the limit regimes) alone, the
+/// independent discretisation the spectral solver is compared with in the tests and in
+/// `examples/spectral_timing.rs`.
 #[doc(hidden)]
-pub fn solve_spectral_to(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSolution> {
-    solve_with(k, tol, traction_tol, true)
+pub fn solve_panels_to(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSolution> {
+    solve_with(k, tol, traction_tol, false)
 }
 
 /// [`solve_to`], the spectral solver tried first where `spectral`.

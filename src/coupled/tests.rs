@@ -794,9 +794,9 @@ fn later_roots_are_the_inadmissible_ones() {
 fn spectral_agrees_with_the_panels() {
     for (b, mu) in [(0.3, 0.5), (0.7, 0.2), (0.5, 3.0)] {
         let k = Coupling { bp: b, bq: b, mu };
-        let s = solve_spectral_to(&k, 1e-10, 1e-8).expect("spectral");
+        let s = solve_to(&k, 1e-10, 1e-8).expect("spectral");
         assert_eq!(s.regime(), "spectral", "({b}, {mu})");
-        let p = solve_to(&k, 1e-10, 1e-8).expect("panels");
+        let p = solve_panels_to(&k, 1e-10, 1e-8).expect("panels");
         assert_eq!(p.regime(), "panels", "({b}, {mu})");
         let dc = s.edge().distance(p.edge());
         let dt = crate::problem::traction_distance(&s, &p);

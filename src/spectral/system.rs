@@ -49,8 +49,9 @@ impl Sizes {
     pub(crate) fn at(level: usize, c: f64, w: f64) -> Self {
         let l = level as f64;
         let per_decade = 2.0 + 0.5 * l;
-        let stick_decades = (20.0 / w).log10();
-        let slip_decades = (10.0 / c).log10();
+        let (zmax, emax) = pole_reach(c, w);
+        let stick_decades = (zmax / (0.1 * w)).log10().max(0.0);
+        let slip_decades = (emax / (0.1 * c)).log10().max(0.0);
         Sizes {
             legendre: 3 + 2 * level,
             stick_g: 2 + 2 * level,
@@ -61,6 +62,21 @@ impl Sizes {
             ],
         }
     }
+}
+
+/// How far from its zone's end the farthest pole of each zone sits (B4): the stick poles at
+/// x = 1 + zeta up to zeta = c, the slip poles at x = -(c + eta) up to eta = 1 - c, each
+/// zone's own length scale. A pole farther away than that is resolved by the zone's
+/// polynomials already (for the stick zone, tau >= 2 and a convergence factor of 3.7 per
+/// degree) and adds only a near-dependent column, whose large cancelling coefficients are
+/// rounding noise in the tractions ((R2)). Measured in one run of
+/// `examples/spectral_timing.rs` (the 8 scenes the spectral solver answers, c to 1e-10,
+/// tractions to 1e-8): with zeta up to 2 and eta up to 1 (the first rule) 79-191 unknowns;
+/// with this rule 66-157, and the answers met the same noise bound. Before the noise bound,
+/// on the 14 scenes of tests/c/coupled_residuals.c the spectral solver serves, the largest
+/// rounding amplification (noise / machine epsilon) fell from 2.0e6 to 5.4e4.
+fn pole_reach(c: f64, w: f64) -> (f64, f64) {
+    (c.min(2.0), w.min(1.0))
 }
 
 /// `n` points log-spaced over [lo, hi].
@@ -91,12 +107,12 @@ impl Basis {
     pub(crate) fn new(k: Constants, c: f64, w: f64, sizes: Sizes) -> Self {
         let g = k.g;
         // stick poles at x = +-(1 + zeta), zeta in [w / 10, 2]: tau = (1 + zeta) / c
-        let stick_z: Vec<Point> = log_spaced(0.1 * w, 2.0, sizes.poles[0])
+        let stick_z: Vec<Point> = log_spaced(0.1 * w, pole_reach(c, w).0, sizes.poles[0])
             .into_iter()
             .map(|z| Point::offsets(-(w + z) / c, (1.0 + z + c) / c))
             .collect();
         // slip poles at x = -(c + eta), eta in [c / 10, 1]: s = (2 x - c - 1) / w
-        let slip_z: Vec<Point> = log_spaced(0.1 * c, 1.0, sizes.poles[1])
+        let slip_z: Vec<Point> = log_spaced(0.1 * c, pole_reach(c, w).1, sizes.poles[1])
             .into_iter()
             .map(|e| Point::offsets(2.0 * (1.0 + c + e) / w, -2.0 * (2.0 * c + e) / w))
             .collect();
@@ -276,6 +292,9 @@ pub(crate) struct Fixed {
     pub(crate) coef: Vec<f64>,
     /// The border constant of (E2) (zero at the exact c).
     pub(crate) sigma: f64,
+    /// The largest residual of (E1) and (E2) at the collocation points, relative to the
+    /// smallest term of the equation there (R1).
+    pub(crate) residual: f64,
 }
 
 /// Solves the fixed-c system at `sizes` (module documentation).
@@ -293,6 +312,8 @@ pub(crate) fn solve_fixed(k: Constants, c: f64, w: f64, sizes: Sizes) -> Result<
     let mut a = vec![0.0; rows * cols];
     let (mut pv, mut qv, mut hp, mut hq) = (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]);
     let mut r = 0;
+    // each point's p columns, for (R1) after the solve
+    let mut p_rows = Vec::with_capacity((stick.len() + slip.len()) * n);
     for (pt, on_stick) in stick
         .iter()
         .map(|p| (p, true))
@@ -300,6 +321,7 @@ pub(crate) fn solve_fixed(k: Constants, c: f64, w: f64, sizes: Sizes) -> Result<
     {
         basis.tractions_row(pt, &mut pv, &mut qv);
         basis.hilbert_row(pt, &mut hp, &mut hq);
+        p_rows.extend_from_slice(&pv);
         let weight = pt.omx.powf(k.g);
         let row = &mut a[r * cols..(r + 1) * cols];
         for j in 0..n {
@@ -417,17 +439,71 @@ pub(crate) fn solve_fixed(k: Constants, c: f64, w: f64, sizes: Sizes) -> Result<
     }
     let coef: Vec<f64> = (0..n).map(|j| full[j] * scale[j]).collect();
     let sigma = full[n] * scale[n];
-    Ok(Fixed { basis, coef, sigma })
+    let mut fixed = Fixed {
+        basis,
+        coef,
+        sigma,
+        residual: 0.0,
+    };
+    // (R1): each row's residual relative to the smallest term of its equation, b mu p in
+    // (E1) (|q| <= mu p) and b p in (E2), in the rows' weights
+    let mut r = 0;
+    for (i, (pt, on_stick)) in stick
+        .iter()
+        .map(|p| (p, true))
+        .chain(slip.iter().map(|p| (p, false)))
+        .enumerate()
+    {
+        let p: f64 = p_rows[i * n..(i + 1) * n]
+            .iter()
+            .zip(&fixed.coef)
+            .map(|(a, b)| a * b)
+            .sum();
+        let size = k.b * p * pt.omx.powf(k.g);
+        for (eq, scale) in [(true, k.mu), (on_stick, 1.0)] {
+            if eq {
+                let row = &a[r * cols..(r + 1) * cols];
+                let res: f64 = row.iter().zip(&full).map(|(a, x)| a * x).sum();
+                fixed.residual = fixed.residual.max(res.abs() / (scale * size));
+                r += 1;
+            }
+        }
+    }
+    Ok(fixed)
 }
 
 impl Fixed {
     /// (p, q) of the reduced problem at a point.
     pub(crate) fn eval(&self, p: &Pt) -> (f64, f64) {
+        let (p, q, _) = self.eval_with_noise(p);
+        (p, q)
+    }
+
+    /// (p, q) at a point, and their rounding noise relative to p: the machine epsilon times
+    /// sum |a_j phi_j(x)| / p(x) for p, and the same for q relative to mu p on the stick zone
+    /// (|q| <= mu p there; on the slip zone q = mu p is exact), the larger of the two. The
+    /// frame's columns are near-dependent, so its coefficients can be large and cancel
+    /// (docs/theory_spectral.md (R2)).
+    pub(crate) fn eval_with_noise(&self, p: &Pt) -> (f64, f64, f64) {
         let n = self.coef.len();
         let (mut pv, mut qv) = (vec![0.0; n], vec![0.0; n]);
         self.basis.tractions_row(p, &mut pv, &mut qv);
-        let dot = |v: &[f64]| v.iter().zip(&self.coef).map(|(a, b)| a * b).sum::<f64>();
-        (dot(&pv), dot(&qv))
+        let (mut value, mut size) = (0.0, 0.0);
+        for (v, a) in pv.iter().zip(&self.coef) {
+            value += v * a;
+            size += (v * a).abs();
+        }
+        let mu = self.basis.k.mu;
+        // q = mu p on the slip zone exactly, not to the rounding of a second sum
+        let (q, q_size) = if p.xmc < 0.0 {
+            qv.iter()
+                .zip(&self.coef)
+                .fold((0.0, 0.0), |(q, s), (v, a)| (q + v * a, s + (v * a).abs()))
+        } else {
+            (mu * value, 0.0)
+        };
+        let noise = f64::EPSILON * size.max(q_size / mu) / value.abs();
+        (value, q, noise)
     }
 
     /// (p, q) at 0 <= x < 1 (the stick side at x = c).
