@@ -109,10 +109,11 @@ pub(crate) struct Field {
 }
 
 impl Field {
-    /// The field of the tractions `e` on the material `k`, with stick half-width c.
-    pub(crate) fn new(e: Expansion, k: &Effective, c: f64) -> Self {
+    /// The field of the tractions `e` on the material `k`, with stick half-width c and the
+    /// punch-edge singularity `edge` ([`Expand::edge_intensity`]; None: (0, 0)).
+    pub(crate) fn new(e: Expansion, edge: Option<(f64, f64)>, k: &Effective, c: f64) -> Self {
         let kernel = Kernel::new(&e);
-        let edge = e.edge_intensity().unwrap_or((0.0, 0.0));
+        let edge = edge.unwrap_or((0.0, 0.0));
         let mut field = Field {
             roots: Roots::new(k),
             kernel,
