@@ -211,3 +211,80 @@ fn hostile_extremes() {
         ));
     }
 }
+
+/// What 1000 hostile draws (seed 2026, tolerances next to 0) found beyond the slow tier's
+/// 250, each at its root (issue 26):
+/// - mu = 1.8e308 (edge exponent g = 2.2e-309): NaN stresses and slip next to x = +-1, the
+///   near-field transform dividing by sin(pi g) (draw 518);
+/// - the near-bonded regime with its slip layer below the panels' resolution: a negative
+///   edge intensity read off the bonded field (draw 657);
+/// - COUPLED for c alone (traction tolerance +infinity): OK with a traction estimate of
+///   +infinity (draws 593, 880);
+/// - tolerances below what the solvers can meet: solves of many minutes (draw 843: 305 s at
+///   1e-16), now worked to [`orthoslip::TOLERANCE_FLOOR`] and refused naming it.
+#[test]
+fn hostile_thousand() {
+    let m =
+        Material::effective(1.0, -0.581_344_605_779_446_2, 1.0, 0.581_345_057_387_163_7).unwrap();
+    let mut k = Contact::new(m);
+    k.set_friction(f64::MAX).unwrap();
+    k.set_method(Method::Coupled);
+    let s = k.solve().unwrap();
+    for x in [1.0 - 1e-15, 1.0f64.next_down(), (-1.0f64).next_up()] {
+        for y in [0.0, -f64::from_bits(1), -1e-300] {
+            let st = s.stresses(x, y).unwrap();
+            assert!(st.iter().all(|v| v.is_finite()), "({x}, {y:e}): {st:?}");
+        }
+        assert!(s.slip(x).unwrap().is_finite(), "slip at {x}");
+    }
+
+    let ply = Material::plane_stress(
+        116_377_763.537_167_98,
+        16_928.902_393_884_968,
+        23_147.972_022_880_655,
+        2.147_772_744_294_554_2,
+    )
+    .unwrap();
+    let mut k = Contact::new(ply);
+    k.set_friction(561_850_230.505_563_4).unwrap();
+    k.set_tolerance(0.9).unwrap();
+    let s = k.solve().unwrap();
+    let (kk, g) = s.edge_intensity();
+    assert!(s.one_minus_c() < 1e-15, "1 - c = {:e}", s.one_minus_c());
+    assert!(kk.is_finite() && kk > 0.0, "k = {kk}");
+    assert_eq!(g, s.coupling().edge_exponent());
+
+    let m = Material::effective(
+        0.080_446_735_035_804_25,
+        -0.502_803_943_615_720_1,
+        0.596_794_376_277_849_8,
+        0.502_803_943_617_944_6,
+    )
+    .unwrap();
+    let mut k = Contact::new(m);
+    k.set_friction(278_062_693.589_523_4).unwrap();
+    k.set_method(Method::Coupled);
+    k.set_traction_tolerance(f64::INFINITY).unwrap();
+    let s = k.solve().unwrap();
+    assert!(s.traction_error_estimate().is_finite());
+
+    let carbon = Material::plane_stress(181e9, 10.3e9, 7.17e9, 0.28).unwrap();
+    for method in [Method::Coupled, Method::Lcp] {
+        let mut k = Contact::new(carbon);
+        k.set_friction(0.3).unwrap();
+        k.set_method(method);
+        k.set_tolerance(1e-100).unwrap();
+        let start = std::time::Instant::now();
+        match k.solve() {
+            Err(orthoslip::Error::ToleranceNotMet { detail, .. }) => {
+                assert!(detail.contains("tolerance floor 1e-12"), "{detail}")
+            }
+            other => panic!("{method:?} at 1e-100: {other:?}"),
+        }
+        assert!(
+            start.elapsed().as_secs() < 60,
+            "{method:?}: {:?}",
+            start.elapsed()
+        );
+    }
+}
