@@ -253,6 +253,21 @@ fn hostile_thousand() {
     assert!(s.one_minus_c() < 1e-15, "1 - c = {:e}", s.one_minus_c());
     assert!(kk.is_finite() && kk > 0.0, "k = {kk}");
     assert_eq!(g, s.coupling().edge_exponent());
+    // a layer whose k exceeds the double range (1 - c = 0 in doubles): the bonded field's
+    let m = Material::effective(
+        0.001_494_116_741_265_517_7,
+        0.999_999_999_999,
+        0.000_486_351_101_641_479_1,
+        -0.999_999_995_666_719_3,
+    )
+    .unwrap();
+    let mut k = Contact::new(m);
+    k.set_friction(41.986_720_455_961_54).unwrap();
+    k.set_method(Method::Coupled);
+    k.set_tolerance(0.003).unwrap();
+    let (kk, g) = k.solve().unwrap().edge_intensity();
+    assert!(kk.is_finite() && kk > 0.0 && g == 0.5, "k = {kk}, g = {g}");
+
 
     let m = Material::effective(
         0.080_446_735_035_804_25,

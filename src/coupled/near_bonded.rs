@@ -181,13 +181,22 @@ impl Expand for NearBonded {
     /// field's p / (1 - x)^(-1/2) oscillates in sign towards the edge, and its value at the
     /// last panel's end gave k = -0.014 with g = 1/2 for a layer of 1.3e-16 (issue 26).
     /// In logarithms: w itself may underflow (q_w = delta amp sin theta as in [`Self::at`]).
-    fn edge_intensity(&self, _: &Expansion) -> Option<(f64, f64)> {
+    /// Where k exceeds the double range (a layer far thinner than the smallest double: 1 - c
+    /// = 0 in doubles at nu = 1 - 1e-12, mu = 42, hostile draw 114 of seed 26), the bonded
+    /// field's at the panels' resolution instead, positive there (its phase stays below
+    /// arctan(mu~) outside the layer).
+    fn edge_intensity(&self, e: &Expansion) -> Option<(f64, f64)> {
         let g = self.coupling.edge_exponent();
         let (ln_w, two_minus_w) = (self.ln_w, 2.0 - self.ln_w.exp());
         let ln_amp = (PI * self.eps).cosh().ln() - PI.ln() - 0.5 * (ln_w + two_minus_w.ln());
         let theta = self.eps * (two_minus_w.ln() - ln_w);
         let ln_k = self.delta.ln() + ln_amp + theta.sin().ln() - self.coupling.mu.ln() + g * ln_w;
-        Some((ln_k.exp(), g))
+        let k = ln_k.exp();
+        if k.is_finite() {
+            Some((k, g))
+        } else {
+            e.edge_intensity()
+        }
     }
 }
 
