@@ -306,8 +306,9 @@ impl Solution {
 
     /// Stresses (sxx, syy, sxy) per P/a inside the solid at (x, y) in units of the punch
     /// half-width a, the solid being y < 0; y = 0 gives the surface values as limits from
-    /// inside (syy = -p, sxy = q on the punch). Tension is positive. At the punch edges
-    /// (|x| = 1, y = 0) sxx = syy = -infinity and sxy = +-infinity (0 when mu = 0).
+    /// inside (syy = -p, sxy = q on the punch), and so do depths below 1e-150 (they differ
+    /// from it by less than rounding). Tension is positive. At the punch edges (|x| = 1 on
+    /// the surface) sxx = syy = -infinity and sxy = +-infinity (0 when mu = 0).
     /// The first call builds the field of the solution's tractions (a fraction of a
     /// millisecond); later calls cost about a microsecond per point.
     ///

@@ -239,6 +239,8 @@ fn hostile_extremes() {
 ///   edge intensity read off the bonded field (draw 657);
 /// - COUPLED for c alone (traction tolerance +infinity): OK with a traction estimate of
 ///   +infinity (draws 593, 880);
+/// - stresses at the punch edge at depths below 1e-150 (taken as the surface): sxx = -inf
+///   beside a finite syy for delta = 1e150 (draw 761);
 /// - tolerances below what the solvers can meet: solves of many minutes (draw 843: 305 s at
 ///   1e-16), now worked to [`orthoslip::TOLERANCE_FLOOR`] and refused naming it.
 #[test]
@@ -300,6 +302,29 @@ fn hostile_thousand() {
     k.set_traction_tolerance(f64::INFINITY).unwrap();
     let s = k.solve().unwrap();
     assert!(s.traction_error_estimate().is_finite());
+
+    // the punch edge at depths that take the surface values (below 1e-150): the edge's
+    // infinities, not sxx = -inf (delta^2 = 1e300 times ~1e150) beside a finite syy
+    let m = Material::effective(
+        0.004_289_966_311_589_815_7,
+        0.483_862_651_392_763_74,
+        1e150,
+        -0.483_842_191_197_848_55,
+    )
+    .unwrap();
+    let mut k = Contact::new(m);
+    k.set_method(Method::Spence);
+    let s = k.solve().unwrap();
+    for y in [0.0, -f64::from_bits(1), -1e-300] {
+        for x in [-1.0, 1.0] {
+            let st = s.stresses(x, y).unwrap();
+            assert_eq!(
+                st,
+                [f64::NEG_INFINITY, f64::NEG_INFINITY, 0.0],
+                "({x}, {y:e})"
+            );
+        }
+    }
 
     let carbon = Material::plane_stress(181e9, 10.3e9, 7.17e9, 0.28).unwrap();
     for method in [Method::Coupled, Method::Lcp] {
