@@ -50,8 +50,8 @@ pub const DEFAULT_TOLERANCE: f64 = 1e-8;
 /// on c and no further, and below it the cost grows with no answer: the scene of hostile
 /// draw 843 (plane stress 16.44, 2633.6, 2.957, -0.0678, mu = 1.43e7) took 30 s at 1e-10
 /// and at 1e-12 (met: traction estimate 3.1e-13), 150 s at 1e-13 and 305 s at 1e-16 (both
-/// missed at 3.1e-13), and solves at 1e-100 and 5e-324 ran for 482-2616 s; the carbon/epoxy
-/// ply at mu = 0.3 meets 1e-13 and misses 1e-14 (estimate 1.3e-14) after 3.5 s.
+/// missed at 3.1e-13; issue 26 reports solves of 482-2616 s at 1e-100 and 5e-324); the
+/// carbon/epoxy ply at mu = 0.3 meets 1e-13 and misses 1e-14 (estimate 1.3e-14) after 3.5 s.
 pub const TOLERANCE_FLOOR: f64 = 1e-12;
 
 /// An a-priori bound on the traction error norm ([`crate::problem::traction_distance`]) of
