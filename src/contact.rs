@@ -114,7 +114,9 @@ impl Contact {
     }
 
     /// Solves the scene with the chosen method; AUTO picks the cheapest method whose error
-    /// estimate meets the tolerance ([`Contact::auto_choice`]).
+    /// estimate meets the tolerance ([`Contact::auto_choice`]). COUPLED and LCP are run to
+    /// the tolerances or [`TOLERANCE_FLOOR`], whichever is larger, and fail with
+    /// [`Error::ToleranceNotMet`] where their estimates miss what was asked.
     pub fn solve(&self) -> Result<Solution> {
         let k = self.coupling();
         let method = match self.method {
@@ -355,7 +357,8 @@ impl Solution {
 
     /// Estimate of the traction error, the norm of [`crate::problem::traction_distance`]
     /// (int (|p - p_exact| + |q - q_exact|) dx over the punch, in units of the normal load):
-    /// from the last two orders for COUPLED, the last two grids for LCP, the empirical
+    /// from the last two orders for COUPLED (at most 2 (1 + mu), which any admissible
+    /// tractions meet), the last two grids for LCP, the empirical
     /// model-error table of [`crate::model_error`] for GOODMAN and SPENCE (+infinity where it
     /// gives no bound).
     pub fn traction_error_estimate(&self) -> f64 {
