@@ -306,7 +306,7 @@ fn hostile_thousand() {
     // the punch edge at depths that take the surface values (below 1e-150): the edge's
     // infinities, not sxx = -inf (delta^2 = 1e300 times ~1e150) beside a finite syy
     let m = Material::effective(
-        0.004_289_966_311_589_815_7,
+        0.004_289_966_311_589_816,
         0.483_862_651_392_763_74,
         1e150,
         -0.483_842_191_197_848_55,
