@@ -263,8 +263,10 @@ orthoslip_status orthoslip_contact_set_method(orthoslip_contact *k, orthoslip_me
  * unless `orthoslip_contact_set_traction_tolerance` set it apart, for the traction error of
  * `orthoslip_solution_traction_error_estimate`. ORTHOSLIP_METHOD_AUTO picks the cheapest
  * method whose error estimates meet both; ORTHOSLIP_METHOD_COUPLED and ORTHOSLIP_METHOD_LCP
- * refine until they meet both; the closed-form approximations (GOODMAN, SPENCE) ignore it
- * and report their model errors in the two estimates.
+ * refine until they meet both, to 1e-12 at most (the tolerance floor: below it a solve
+ * returns ORTHOSLIP_ERROR_TOLERANCE_NOT_MET naming the floor unless its estimates meet the
+ * tolerance anyway); the closed-form approximations (GOODMAN, SPENCE) ignore it and report
+ * their model errors in the two estimates.
  *
  * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER or ORTHOSLIP_ERROR_INVALID_ARGUMENT
  * (the contact is then unchanged).
@@ -506,8 +508,9 @@ orthoslip_status orthoslip_solution_traction_error_estimate(const orthoslip_solu
 /**
  * Evaluates the stresses inside the solid at n points (x[i], y[i]) in units of the punch
  * half-width a, dimensionless per P/a. The solid is y < 0; y = 0 gives the surface values
- * as limits from inside. Tension is positive. On the punch at y = 0: syy = -p, sxy = q
- * (q: the traction on the solid in +x); at the punch edges themselves (|x| = 1, y = 0)
+ * as limits from inside, and so do depths below 1e-150 (they differ from them by less than
+ * rounding). Tension is positive. On the punch at y = 0: syy = -p, sxy = q (q: the traction
+ * on the solid in +x); at the punch edges themselves (|x| = 1 on the surface)
  * sxx = syy = -INFINITY and sxy = +-INFINITY (0 when mu = 0). Each method's stresses are
  * those of its own tractions (Lekhnistskii's potentials of the half-plane). Near the
  * surface at the punch edge, sxx(x, 0) ~ -k [delta^2 + (1 - nu) mu^2] (1 - |x|)^(-g) with the

@@ -41,7 +41,7 @@ pub mod spence;
 // The C ABI: its exported functions are the C API, nothing in it is Rust API.
 mod ffi;
 
-pub use contact::{Contact, Method, Solution};
+pub use contact::{Contact, Method, Solution, TOLERANCE_FLOOR};
 pub use error::{Error, Result};
 pub use material::{Effective, Green, Material};
 pub use problem::{Coupling, Profile, StickEdge};

@@ -254,6 +254,18 @@ fn install_and_consume() {
     let moved = work.join("prefix-moved");
     fresh_dir(&prefix);
     fresh_dir(&moved);
+    // cmake refuses a build tree configured elsewhere or from another source (a target
+    // directory copied from, or shared with, another checkout): start that one afresh too
+    let cache = std::fs::read_to_string(build.join("CMakeCache.txt")).unwrap_or_default();
+    let ours = [
+        ("CMAKE_CACHEFILE_DIR", &build),
+        ("CMAKE_HOME_DIRECTORY", &source.to_path_buf()),
+    ]
+    .iter()
+    .all(|(key, dir)| cache.contains(&format!("{key}:INTERNAL={}\n", dir.display())));
+    if !ours {
+        fresh_dir(&build);
+    }
 
     // 1. Root project: configure, build (cargo build --release), install.
     let mut configure = command("cmake");

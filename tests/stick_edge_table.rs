@@ -60,10 +60,10 @@ fn bounds_hold_off_the_nodes() {
     bounds_hold_off_the_nodes_of(1);
 }
 
-/// The fast tier's share of [`bounds_hold_off_the_nodes`]: every fourth patch.
+/// The fast tier's share of [`bounds_hold_off_the_nodes`]: every eighth patch.
 #[test]
 fn bounds_hold_off_the_nodes_of_a_few_patches() {
-    bounds_hold_off_the_nodes_of(4);
+    bounds_hold_off_the_nodes_of(8);
 }
 
 /// A random point in every `step`-th patch against COUPLED.

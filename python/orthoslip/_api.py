@@ -309,8 +309,9 @@ class Solution:
         """The stresses (sxx, syy, sxy) per P/a inside the solid at the points (x, y) in
         units of a (``x`` and ``y`` broadcast against each other). The solid is y < 0;
         y = 0 gives the surface values as limits from inside (syy = -p, sxy = q on the
-        punch). Tension is positive. Each method's stresses are those of its own tractions.
-        At the punch edges on the surface (|x| = 1, y = 0) sxx = syy = -inf.
+        punch), and so do depths below 1e-150. Tension is positive. Each method's stresses
+        are those of its own tractions. At the punch edges on the surface (|x| = 1, y = 0
+        or a depth below 1e-150) sxx = syy = -inf.
 
         Raises:
             InvalidArgumentError: some x or y is NaN or infinite, or some y > 0.

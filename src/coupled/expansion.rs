@@ -239,4 +239,11 @@ impl Expand for CoupledSolution {
             ),
         }
     }
+
+    fn edge_intensity(&self, e: &Expansion) -> Option<(f64, f64)> {
+        match &self.regime {
+            Regime::NearBonded(b) => b.edge_intensity(e),
+            _ => e.edge_intensity(),
+        }
+    }
 }

@@ -175,6 +175,29 @@ impl Expand for NearBonded {
         panels.push(panel(a, 1.0, Weight::Right(-edge)));
         Expansion { panels }
     }
+
+    /// The slip layer's p = q_w / mu (w / u)^g at u = 1 - x < w, also where the expansion
+    /// carries the bonded field to the edge instead (the layer below its resolution): that
+    /// field's p / (1 - x)^(-1/2) oscillates in sign towards the edge, and its value at the
+    /// last panel's end gave k = -0.014 with g = 1/2 for a layer of 1.3e-16 (issue 26).
+    /// In logarithms: w itself may underflow (q_w = delta amp sin theta as in [`Self::at`]).
+    /// Where k exceeds the double range (a layer far thinner than the smallest double: 1 - c
+    /// = 0 in doubles at nu = 1 - 1e-12, mu = 42, hostile draw 114 of seed 26), the bonded
+    /// field's at the panels' resolution instead, positive there (its phase stays below
+    /// arctan(mu~) outside the layer).
+    fn edge_intensity(&self, e: &Expansion) -> Option<(f64, f64)> {
+        let g = self.coupling.edge_exponent();
+        let (ln_w, two_minus_w) = (self.ln_w, 2.0 - self.ln_w.exp());
+        let ln_amp = (PI * self.eps).cosh().ln() - PI.ln() - 0.5 * (ln_w + two_minus_w.ln());
+        let theta = self.eps * (two_minus_w.ln() - ln_w);
+        let ln_k = self.delta.ln() + ln_amp + theta.sin().ln() - self.coupling.mu.ln() + g * ln_w;
+        let k = ln_k.exp();
+        if k.is_finite() {
+            Some((k, g))
+        } else {
+            e.edge_intensity()
+        }
+    }
 }
 
 #[cfg(test)]
@@ -310,45 +333,61 @@ mod tests {
     /// Against the panels where both work (1 - c from 5e-14 to 0.03): 1 - c lies inside the
     /// law's range, the bonded tractions are within their bound, and where COUPLED takes this
     /// regime (solve_to at the tolerances its bounds meet) the panels' c and tractions agree
-    /// with it within them: the switch is continuous.
+    /// with it within them: the switch is continuous. The fast tier's four scenes, one per
+    /// b*, the law's bound on 1 - c from 0.15 down to 4e-7 ([`law_matches_the_panels_wide`]:
+    /// all 15).
     #[test]
     fn law_matches_the_panels() {
+        law_matches_the_panels_at(&[(0.15, 1.0), (0.2, 2.0), (0.25, 100.0), (0.3, 0.5)]);
+    }
+
+    #[test]
+    #[ignore = "slow tier: the near-bonded law against the panels at 15 scenes"]
+    fn law_matches_the_panels_wide() {
+        let mut scenes = Vec::new();
         for b in [0.15, 0.2, 0.25, 0.3] {
             for m in [0.5, 1.0, 2.0, 100.0] {
                 if b == 0.15 && m > 2.0 {
                     continue; // 1 - c = 2e-13: several seconds of panels
                 }
-                let k = Coupling {
-                    bp: b,
-                    bq: b,
-                    mu: m,
-                };
-                let nb = NearBonded::new(&k);
-                let s = crate::coupled::panels(&k, 1e-10, f64::INFINITY).unwrap();
-                let w = s.edge().one_minus_c;
-                let (lo, hi) = ln_w_range(b, m).unwrap();
+                scenes.push((b, m));
+            }
+        }
+        law_matches_the_panels_at(&scenes);
+    }
+
+    fn law_matches_the_panels_at(scenes: &[(f64, f64)]) {
+        for &(b, m) in scenes {
+            let k = Coupling {
+                bp: b,
+                bq: b,
+                mu: m,
+            };
+            let nb = NearBonded::new(&k);
+            let s = crate::coupled::panels(&k, 1e-10, f64::INFINITY).unwrap();
+            let w = s.edge().one_minus_c;
+            let (lo, hi) = ln_w_range(b, m).unwrap();
+            assert!(
+                lo < w.ln() && w.ln() < hi,
+                "b {b} m {m}: ln w {} outside ({lo}, {hi})",
+                w.ln()
+            );
+            assert!(s.edge().distance(nb.edge()) <= nb.numerical_error());
+            let d = traction_distance(&s, &nb);
+            assert!(
+                d <= nb.traction_error(),
+                "b {b} m {m}: distance {d:e} > {:e}",
+                nb.traction_error()
+            );
+            let (tol, ttol) = (nb.numerical_error() * 1.01, nb.traction_error() * 1.01);
+            if tol < 1.0 {
+                let chosen = crate::coupled::solve_to(&k, tol, ttol).unwrap();
                 assert!(
-                    lo < w.ln() && w.ln() < hi,
-                    "b {b} m {m}: ln w {} outside ({lo}, {hi})",
-                    w.ln()
+                    matches!(chosen.regime, Regime::NearBonded(_)),
+                    "b {b} m {m}"
                 );
-                assert!(s.edge().distance(nb.edge()) <= nb.numerical_error());
-                let d = traction_distance(&s, &nb);
-                assert!(
-                    d <= nb.traction_error(),
-                    "b {b} m {m}: distance {d:e} > {:e}",
-                    nb.traction_error()
-                );
-                let (tol, ttol) = (nb.numerical_error() * 1.01, nb.traction_error() * 1.01);
-                if tol < 1.0 {
-                    let chosen = crate::coupled::solve_to(&k, tol, ttol).unwrap();
-                    assert!(
-                        matches!(chosen.regime, Regime::NearBonded(_)),
-                        "b {b} m {m}"
-                    );
-                    assert!(chosen.edge().distance(s.edge()) <= tol);
-                    assert!(traction_distance(&chosen, &s) <= ttol);
-                }
+                assert!(chosen.edge().distance(s.edge()) <= tol);
+                assert!(traction_distance(&chosen, &s) <= ttol);
             }
         }
     }

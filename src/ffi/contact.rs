@@ -94,8 +94,10 @@ pub unsafe extern "C" fn orthoslip_contact_set_method(
 /// unless `orthoslip_contact_set_traction_tolerance` set it apart, for the traction error of
 /// `orthoslip_solution_traction_error_estimate`. ORTHOSLIP_METHOD_AUTO picks the cheapest
 /// method whose error estimates meet both; ORTHOSLIP_METHOD_COUPLED and ORTHOSLIP_METHOD_LCP
-/// refine until they meet both; the closed-form approximations (GOODMAN, SPENCE) ignore it
-/// and report their model errors in the two estimates.
+/// refine until they meet both, to 1e-12 at most (the tolerance floor: below it a solve
+/// returns ORTHOSLIP_ERROR_TOLERANCE_NOT_MET naming the floor unless its estimates meet the
+/// tolerance anyway); the closed-form approximations (GOODMAN, SPENCE) ignore it and report
+/// their model errors in the two estimates.
 ///
 /// Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER or ORTHOSLIP_ERROR_INVALID_ARGUMENT
 /// (the contact is then unchanged).

@@ -22,8 +22,9 @@ unsafe fn check_finite(v: *const f64, n: usize, name: &str) -> Result<(), Failur
 
 /// Evaluates the stresses inside the solid at n points (x[i], y[i]) in units of the punch
 /// half-width a, dimensionless per P/a. The solid is y < 0; y = 0 gives the surface values
-/// as limits from inside. Tension is positive. On the punch at y = 0: syy = -p, sxy = q
-/// (q: the traction on the solid in +x); at the punch edges themselves (|x| = 1, y = 0)
+/// as limits from inside, and so do depths below 1e-150 (they differ from them by less than
+/// rounding). Tension is positive. On the punch at y = 0: syy = -p, sxy = q (q: the traction
+/// on the solid in +x); at the punch edges themselves (|x| = 1 on the surface)
 /// sxx = syy = -INFINITY and sxy = +-INFINITY (0 when mu = 0). Each method's stresses are
 /// those of its own tractions (Lekhnistskii's potentials of the half-plane). Near the
 /// surface at the punch edge, sxx(x, 0) ~ -k [delta^2 + (1 - nu) mu^2] (1 - |x|)^(-g) with the

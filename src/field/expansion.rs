@@ -92,6 +92,13 @@ impl Expansion {
 pub(crate) trait Expand {
     /// The expansion of this solution's own tractions.
     fn expansion(&self) -> Expansion;
+
+    /// The punch-edge singularity (k, g) of p ~ k (1 - x)^(-g) of these tractions, given
+    /// their expansion `e`: by default the expansion's ([`Expansion::edge_intensity`]); a
+    /// solution whose edge field lies below the panels' resolution gives its own.
+    fn edge_intensity(&self, e: &Expansion) -> Option<(f64, f64)> {
+        e.edge_intensity()
+    }
 }
 
 /// What a sampled method knows of its tractions' local exponents.

@@ -109,10 +109,11 @@ pub(crate) struct Field {
 }
 
 impl Field {
-    /// The field of the tractions `e` on the material `k`, with stick half-width c.
-    pub(crate) fn new(e: Expansion, k: &Effective, c: f64) -> Self {
+    /// The field of the tractions `e` on the material `k`, with stick half-width c and the
+    /// punch-edge singularity `edge` ([`Expand::edge_intensity`]; None: (0, 0)).
+    pub(crate) fn new(e: Expansion, edge: Option<(f64, f64)>, k: &Effective, c: f64) -> Self {
         let kernel = Kernel::new(&e);
-        let edge = e.edge_intensity().unwrap_or((0.0, 0.0));
+        let edge = edge.unwrap_or((0.0, 0.0));
         let mut field = Field {
             roots: Roots::new(k),
             kernel,
@@ -141,8 +142,11 @@ impl Field {
 
     /// (sxx, syy, sxy) per P/a at (x, y), y <= 0, both finite (y = 0: the limit from inside).
     pub(crate) fn stresses(&self, x: f64, y: f64) -> [f64; 3] {
-        if y == 0.0 && x.abs() == 1.0 {
-            // the punch edge itself: p, |q| and -sxx are infinite (q = 0 without friction)
+        if y > -SURFACE_LIMIT_ABOVE && x.abs() == 1.0 {
+            // the punch edge itself, also at the depths that take the surface limit: p, |q|
+            // and -sxx are infinite (q = 0 without friction); at y = -1e-300 the transforms
+            // of the edge singularity, ~1e150, times delta^2 = 1e300 gave sxx = -inf with a
+            // finite syy (hostile draw 761)
             let (_, q) = self.expansion.tractions(0.5);
             let sxy = if q == 0.0 {
                 0.0

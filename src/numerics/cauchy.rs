@@ -296,6 +296,12 @@ fn gap_over(x: f64, principal: bool) -> f64 {
     }
 }
 
+/// |e| up to which u^e is 1 for every double u in (0, 2]: |e ln u| <= 745 |e| < eps / 2.
+/// Below it [`end_cauchy_complex`]'s closed form divides by sin(pi e) ~ pi e, which overflows
+/// for |e| below about 7e-309 (g = 2.2e-309 at mu = 1.8e308: NaN stresses next to the
+/// punch edge, issue 26).
+const UNIT_POWER_BELOW: f64 = 1e-19;
+
 /// Largest Bernstein parameter rho(zeta) = |zeta + sqrt(zeta^2 - 1)| at which
 /// [`near_transforms`] is meant to be used: its forward recurrence loses at most
 /// eps rho^k <= 4e-12 at degree 25, and its Lerch sums converge there (|w - 1/2| <= 0.55 for
@@ -322,7 +328,9 @@ pub(crate) struct Local {
 /// logarithm; e > 0 reduces to e - 1 by u^e / (u - s) = u^(e-1) + s u^(e-1) / (u - s).
 /// The derivative follows from integrating by parts: dE/ds = -2^e / (2 - s) + e E(e - 1, s),
 /// which for e <= 0 reads -2^e / (2 - s) + (e E(e, s) - 2^e) / s.
+/// |e| <= [`UNIT_POWER_BELOW`] is e = 0.
 fn end_cauchy_complex(e: f64, s: C64, two_minus_s: C64) -> (C64, C64) {
+    let e = if e.abs() <= UNIT_POWER_BELOW { 0.0 } else { e };
     if e > 0.0 {
         let (lower, _) = end_cauchy_complex(e - 1.0, s, two_minus_s);
         let value = e.exp2() / e + s * lower;
