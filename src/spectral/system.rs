@@ -49,9 +49,9 @@ impl Sizes {
     pub(crate) fn at(level: usize, c: f64, w: f64) -> Self {
         let l = level as f64;
         let per_decade = 2.0 + 0.5 * l;
-        let (zmax, emax) = pole_reach(c, w);
-        let stick_decades = (zmax / (0.1 * w)).log10().max(0.0);
-        let slip_decades = (emax / (0.1 * c)).log10().max(0.0);
+        let decades = |[near, far]: [f64; 2]| (far / near).log10().max(0.0);
+        let [stick, slip] = pole_ranges(c, w);
+        let (stick_decades, slip_decades) = (decades(stick), decades(slip));
         Sizes {
             legendre: 3 + 2 * level,
             stick_g: 2 + 2 * level,
@@ -64,9 +64,10 @@ impl Sizes {
     }
 }
 
-/// How far from its zone's end the farthest pole of each zone sits (B4): the stick poles at
-/// x = 1 + zeta up to zeta = c, the slip poles at x = -(c + eta) up to eta = 1 - c, each
-/// zone's own length scale. A pole farther away than that is resolved by the zone's
+/// The ranges [nearest, farthest] of the poles' distances (B4): the stick poles at
+/// x = +-(1 + zeta), zeta from (1 - c) / 10 to c, the slip poles at x = -(c + eta), eta from
+/// c / 10 to 1 - c. The nearest is a tenth of the distance from the zone's end to the
+/// singular point beyond it; the farthest is the zone's own length scale. A pole farther away than that is resolved by the zone's
 /// polynomials already (for the stick zone, tau >= 2 and a convergence factor of 3.7 per
 /// degree) and adds only a near-dependent column, whose large cancelling coefficients are
 /// rounding noise in the tractions ((R2)). Measured in one run of
@@ -75,8 +76,8 @@ impl Sizes {
 /// with this rule 66-157, and the answers met the same noise bound. Before the noise bound,
 /// on the 14 scenes of tests/c/coupled_residuals.c the spectral solver serves, the largest
 /// rounding amplification (noise / machine epsilon) fell from 2.0e6 to 5.4e4.
-fn pole_reach(c: f64, w: f64) -> (f64, f64) {
-    (c.min(2.0), w.min(1.0))
+fn pole_ranges(c: f64, w: f64) -> [[f64; 2]; 2] {
+    [[0.1 * w, c], [0.1 * c, w]]
 }
 
 /// `n` points log-spaced over [lo, hi].
@@ -106,13 +107,14 @@ pub(crate) struct Basis {
 impl Basis {
     pub(crate) fn new(k: Constants, c: f64, w: f64, sizes: Sizes) -> Self {
         let g = k.g;
-        // stick poles at x = +-(1 + zeta), zeta in [w / 10, 2]: tau = (1 + zeta) / c
-        let stick_z: Vec<Point> = log_spaced(0.1 * w, pole_reach(c, w).0, sizes.poles[0])
+        let [[z0, z1], [e0, e1]] = pole_ranges(c, w);
+        // stick poles at x = +-(1 + zeta): tau = (1 + zeta) / c
+        let stick_z: Vec<Point> = log_spaced(z0, z1, sizes.poles[0])
             .into_iter()
             .map(|z| Point::offsets(-(w + z) / c, (1.0 + z + c) / c))
             .collect();
-        // slip poles at x = -(c + eta), eta in [c / 10, 1]: s = (2 x - c - 1) / w
-        let slip_z: Vec<Point> = log_spaced(0.1 * c, pole_reach(c, w).1, sizes.poles[1])
+        // slip poles at x = -(c + eta): s = (2 x - c - 1) / w
+        let slip_z: Vec<Point> = log_spaced(e0, e1, sizes.poles[1])
             .into_iter()
             .map(|e| Point::offsets(2.0 * (1.0 + c + e) / w, -2.0 * (2.0 * c + e) / w))
             .collect();
