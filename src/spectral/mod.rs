@@ -291,8 +291,8 @@ pub(crate) fn at_edge(
 enum Verdict {
     /// The traction estimate with the rounding noise added.
     Answer((f64, f64)),
-    /// Its rounding noise is above [`noise_max`] or, added to the estimate, above the
-    /// tolerance: the next level (the noise falls with the level, (R2)).
+    /// Its rounding noise, added to the estimate, takes it above the tolerance: the next
+    /// level (the noise falls with the level, (R2)).
     Noisy,
     /// p <= 0 or |q| > mu p on the stick zone: no answer.
     Inadmissible,
@@ -305,7 +305,7 @@ fn verdict(f: &Fixed, mu: f64, traction_tol: f64, delta: f64, parts: (f64, f64))
         return Verdict::Inadmissible;
     };
     let parts = (parts.0 + noise, parts.1 + mu * noise);
-    if noise <= noise_max(traction_tol) && parts.0 + delta * parts.1 <= traction_tol {
+    if parts.0 + delta * parts.1 <= traction_tol {
         Verdict::Answer(parts)
     } else {
         Verdict::Noisy
@@ -344,27 +344,6 @@ fn distance(a: &Fixed, b: &Fixed) -> (f64, f64) {
 
 /// Points per zone of the admissibility check.
 const CHECK_POINTS: usize = 64;
-
-/// Largest rounding noise of the tractions relative to p ([`Fixed::eval_with_noise`]) an
-/// answer may carry at the traction tolerance `traction_tol` (R2): [`NOISE_GAIN`] times the
-/// tolerance, but never below [`NOISE_FLOOR`].
-fn noise_max(traction_tol: f64) -> f64 {
-    (NOISE_GAIN * traction_tol).max(NOISE_FLOOR)
-}
-
-/// How much of the traction tolerance the rounding noise may take: a pointwise check of the
-/// equations by adaptive principal values magnifies a white noise about 1e5-fold. The panels'
-/// tractions with a white relative noise of 1e-13 added failed GSL's pointwise check of (E1)
-/// in tests/c/coupled_residuals.c (1.06e-8 against 1e-8), with 1e-12 by far (1.2e-7); the
-/// spectral answers of that program passed it with noise bounds up to 1.4e-13 and failed it
-/// at 3.0e-13 (1.01e-8).
-const NOISE_GAIN: f64 = 1e-5;
-
-/// The frame's own noise floor, below which no level answers: the bounds measured at levels
-/// 1-4 fell to 1e-15 .. 1e-13 and stayed there (b* = 0.33, mu~ = 0.15: 4.6e-12, 1.1e-12,
-/// 1.2e-15, 5.6e-16), and a bound of 1e-5 times a tolerance of 1e-10 (1e-15) refused every
-/// level up to the last at some scenes (99 ms per answer in examples/speed_accuracy.rs).
-const NOISE_FLOOR: f64 = 1e-13;
 
 /// Whether the answer is admissible, and its rounding noise: p > 0 everywhere and
 /// |q| <= mu p on the stick zone (to 1e-6 relative), at Chebyshev points of each zone; the
