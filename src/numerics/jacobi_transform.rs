@@ -157,6 +157,11 @@ impl JacobiFamily {
         }
     }
 
+    /// Whether `other` is the same family (exponents and length).
+    pub(crate) fn same_as(&self, other: &JacobiFamily) -> bool {
+        (self.a, self.b, self.n) == (other.a, other.b, other.n)
+    }
+
     /// Number of functions.
     pub(crate) fn len(&self) -> usize {
         self.n

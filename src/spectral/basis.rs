@@ -85,11 +85,23 @@ impl Block {
 
     /// The columns' transforms T at y (off the ends) into out[..len].
     pub(crate) fn transforms(&self, y: Point, buf: &mut [f64], out: &mut [f64]) {
+        self.family_transforms(y, buf);
+        self.transforms_from(y, buf, out);
+    }
+
+    /// The family's transforms T_k at y, k < [`Block::scratch`], into buf: shared by the
+    /// blocks of one family ([`Block::same_family`]).
+    pub(crate) fn family_transforms(&self, y: Point, buf: &mut [f64]) {
         let n = self.family.len();
         self.family.transforms(y, &mut buf[..n]);
-        let t0 = buf[0];
+    }
+
+    /// The columns' transforms at y into out[..len] from the family's, `family` (from
+    /// [`Block::family_transforms`] at the same y, of this block or one of the same family).
+    pub(crate) fn transforms_from(&self, y: Point, family: &[f64], out: &mut [f64]) {
+        let t0 = family[0];
         for (o, &k) in out.iter_mut().zip(&self.degrees) {
-            *o = buf[k];
+            *o = family[k];
         }
         let m = self.degrees.len();
         for (o, &(z, t0z, t0mz)) in out[m..].iter_mut().zip(&self.poles) {
@@ -101,6 +113,12 @@ impl Block {
             }
             *o = t;
         }
+    }
+
+    /// Whether `other` has this block's family (the same exponents and length), so that
+    /// the family's transforms serve both.
+    pub(crate) fn same_family(&self, other: &Block) -> bool {
+        self.family.same_as(&other.family)
     }
 
     /// The columns' integrals over [-1, 1].

@@ -224,20 +224,25 @@ impl Basis {
         }
     }
 
-    /// The columns' H[p] and H[q] at a point.
-    fn hilbert_row(&self, p: &Pt, hp: &mut [f64], hq: &mut [f64]) {
+    /// The columns' H[p] and H[q] at a point; `scratch` of length [`Basis::scratch_len`].
+    fn hilbert_row(&self, p: &Pt, hp: &mut [f64], hq: &mut [f64], scratch: &mut [f64]) {
         hp.fill(0.0);
         hq.fill(0.0);
-        let mut buf = vec![0.0; self.scratch];
-        let mut other = vec![0.0; hp.len()];
+        let (buf, other) = scratch.split_at_mut(self.scratch);
+        let other = &mut other[..hp.len()];
         let (q0, s0) = self.starts();
         let t = self.tau(p);
         let n0 = self.stick[0].len();
-        self.stick[0].transforms(t, &mut buf, &mut hp[..n0]);
+        // the even and odd Legendre blocks share their family's transforms
+        self.stick[0].family_transforms(t, buf);
+        self.stick[0].transforms_from(t, buf, &mut hp[..n0]);
         let n1 = self.stick[1].len();
-        self.stick[1].transforms(t, &mut buf, &mut hq[q0..q0 + n1]);
+        if !self.stick[1].same_family(&self.stick[0]) {
+            self.stick[1].family_transforms(t, buf);
+        }
+        self.stick[1].transforms_from(t, buf, &mut hq[q0..q0 + n1]);
         let n2 = self.stick[2].len();
-        self.stick[2].transforms(t, &mut buf, &mut hq[q0 + n1..q0 + n1 + n2]);
+        self.stick[2].transforms(t, buf, &mut hq[q0 + n1..q0 + n1 + n2]);
         // H = -T on the zone's own map
         for v in hp[..s0].iter_mut().chain(hq[..s0].iter_mut()) {
             *v = -*v;
@@ -246,8 +251,8 @@ impl Basis {
         let mut at = s0;
         for b in &self.slip {
             let n = b.len();
-            b.transforms(s, &mut buf, &mut hp[at..at + n]);
-            b.transforms(sm, &mut buf, &mut other[at..at + n]);
+            b.transforms(s, buf, &mut hp[at..at + n]);
+            b.transforms(sm, buf, &mut other[at..at + n]);
             at += n;
         }
         let mu = self.k.mu;
@@ -257,6 +262,11 @@ impl Basis {
             hp[j] = -own + mirror;
             hq[j] = mu * (-own - mirror);
         }
+    }
+
+    /// Length of the scratch buffer of [`Basis::hilbert_row`].
+    fn scratch_len(&self) -> usize {
+        self.scratch + self.len()
     }
 
     /// int_{-1}^{1} p of each column.
@@ -313,6 +323,7 @@ pub(crate) fn solve_fixed(k: Constants, c: f64, w: f64, sizes: Sizes) -> Result<
     let rows = 2 * stick.len() + slip.len();
     let mut a = vec![0.0; rows * cols];
     let (mut pv, mut qv, mut hp, mut hq) = (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+    let mut scratch = vec![0.0; basis.scratch_len()];
     let mut r = 0;
     // each point's p columns, for (R1) after the solve
     let mut p_rows = Vec::with_capacity((stick.len() + slip.len()) * n);
@@ -322,7 +333,7 @@ pub(crate) fn solve_fixed(k: Constants, c: f64, w: f64, sizes: Sizes) -> Result<
         .chain(slip.iter().map(|p| (p, false)))
     {
         basis.tractions_row(pt, &mut pv, &mut qv);
-        basis.hilbert_row(pt, &mut hp, &mut hq);
+        basis.hilbert_row(pt, &mut hp, &mut hq, &mut scratch);
         p_rows.extend_from_slice(&pv);
         let weight = pt.omx.powf(k.g);
         let row = &mut a[r * cols..(r + 1) * cols];
@@ -530,7 +541,8 @@ impl Fixed {
             xmc: x - self.basis.c,
         };
         let (mut hp, mut hq) = (vec![0.0; n], vec![0.0; n]);
-        self.basis.hilbert_row(&pt, &mut hp, &mut hq);
+        let mut scratch = vec![0.0; self.basis.scratch_len()];
+        self.basis.hilbert_row(&pt, &mut hp, &mut hq, &mut scratch);
         let dot = |v: &[f64]| v.iter().zip(&self.coef).map(|(a, b)| a * b).sum::<f64>();
         let (p, q) = self.eval(&pt);
         let b = self.basis.k.b;
