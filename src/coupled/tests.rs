@@ -788,11 +788,20 @@ fn later_roots_are_the_inadmissible_ones() {
 }
 
 /// The spectral solver (global bases per zone) against the panels, an independent
-/// discretisation, on mid-range scenes of the reduced plane: c and the tractions within the
+/// discretisation, on mid-range scenes of the reduced plane and at the limits the spectral
+/// solver serves (docs/theory_spectral.md (B5)): c and the tractions within the
 /// sum of both solutions' estimates, and the spectral solver is the one that answers there.
 #[test]
 fn spectral_agrees_with_the_panels() {
-    for (b, mu) in [(0.3, 0.5), (0.7, 0.2), (0.5, 3.0)] {
+    // the mid-range, then the limits of (B5): g = 0.031, 1 - c = 6.7e-6, b* = 0.9895
+    for (b, mu) in [
+        (0.3, 0.5),
+        (0.7, 0.2),
+        (0.5, 3.0),
+        (0.4288, 24.23),
+        (0.2710, 3.332),
+        (0.9895, 1.721),
+    ] {
         let k = Coupling { bp: b, bq: b, mu };
         let s = solve_to(&k, 1e-10, 1e-8).expect("spectral");
         assert_eq!(s.regime(), "spectral", "({b}, {mu})");

@@ -28,38 +28,35 @@ use system::{Fixed, Sizes, solve_fixed};
 
 /// Smallest edge exponent g the bases serve. As g -> 0 (large friction, g ~ 1/(pi b* mu~))
 /// the slip zone's two weights (1 - s)^-g and (1 - s)^-g (1 + s)^g, and the stick zone's
-/// Legendre and P^(g,g) families, become the same functions, and the frame degenerates:
-/// - with p and q continuous at c imposed exactly (C2), the levels' traction distance
-///   stalled at 1e-9 .. 1e-8 for g = 0.0195 (b* = 0.75, mu~ = 21.8);
-/// - with the rounding-noise bound (R2), the noise stayed at 4e-13 .. 8e-13 at levels 3-10
-///   for g = 0.033 (b* = 0.9217, mu~ = 10.28), and the slow tier's 24 x 24 grid of the
-///   table left 6 points with g = 0.030 .. 0.044 unanswered; from g = 0.05 on it answered
-///   every point.
+/// Legendre and P^(g,g) families, become the same functions, and the frame degenerates. On
+/// the 24 x 24 grid of the table's coordinates (c to 1e-10, tractions to 1e-8) with no
+/// limit down to g = 0.005, every point with g <= 0.024 went unanswered after 50-150 ms of
+/// levels, and the one answer at g = 0.027 (with 1 - c = 3.4e-6) was 8.6e-8 from the
+/// panels' against estimates of 6.9e-9 and 2.6e-9; from g = 0.03 on, the grids of 24, 37
+/// and 53 points per side answered every point and agreed with the panels
+/// (docs/theory_spectral.md (B5)).
 ///
 /// The difference quotient ((1 + s)^g - 1) / g is the basis for small g (the panels use it
 /// from g < 1e-2); until it is built, the panels answer there.
-const G_MIN: f64 = 0.05;
+const G_MIN: f64 = 0.03;
 
-/// Thinnest slip zone the bases serve in this phase: on the 24 x 24 grid of the table the
-/// points with 1 - c = 4.1e-6 .. 4.4e-4 went unanswered. At b* = 0.2961, mu~ = 1.55
-/// (1 - c = 3.6e-4) the rounding noise (R2) came down to 1.8e-13 only at level 7
-/// (169 unknowns); at mu~ = 7.8 (1 - c = 6.6e-6) the levels above 3 drifted (sigma from
-/// 1.9e-10 to 4e-8). Thin slip zones are the next phase's (tapered poles, or the
-/// inner/outer split with the bonded family).
-const W_MIN: f64 = 1e-3;
+/// Thinnest slip zone the bases serve in this phase: on the 24 x 24 grid with no limit,
+/// 1 - c = 6.6e-6 answered and agreed with the panels, 4.1e-6 went unanswered (g = 0.061)
+/// and 3.4e-6 answered wrongly (g = 0.027, see [`G_MIN`]); on the grids of 37 and 53 points
+/// per side every point down to 6.7e-6 answered and agreed with the panels. Thinner slip
+/// zones are the next phase's (tapered poles, or the inner/outer split with the bonded
+/// family).
+const W_MIN: f64 = 5e-6;
 
 /// Smallest stick zone the bases serve in this phase, the smallest measured: at c = 4.8e-5
 /// (the carbon ply at mu = 0.1) the answer passed GSL's pointwise check in
 /// tests/c/coupled_residuals.c and agreed with the panels' tractions to 4.8e-12
-/// (examples/spectral_timing.rs). (Before the noise bound (R2) the answer there had failed
-/// that check at 1.01e-8.)
+/// (examples/spectral_timing.rs).
 const C_MIN: f64 = 4e-5;
 
-/// Largest b* the bases serve in this phase: towards the auxetic limit b* -> 1 the levels
-/// needed rose (level 3 up to b* = 0.98, 4 at 0.9836, 5 at 0.9865 on the table's grid at
-/// c ~ 3e-4) and at b* = 0.989 (c = 2.9e-4) the rounding noise stayed at 2e-13 .. 3e-13 at
-/// every level from 4 to 10.
-const B_MAX: f64 = 0.985;
+/// Largest b* the bases serve in this phase: the largest of the table's grids, 0.989, where
+/// every point answered at level 3 and agreed with the panels (c = 2.9e-4 .. 4.1e-2).
+const B_MAX: f64 = 0.99;
 
 /// Levels of the bases' sizes tried in turn ([`Sizes::at`]): the mid-range scenes stop at
 /// levels 2-4; the 1 - c = 2.1e-3 of b* = 0.2857, mu~ = 1 needs 7 for tractions to 1e-10,
