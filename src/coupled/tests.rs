@@ -818,3 +818,63 @@ fn spectral_agrees_with_the_panels() {
         );
     }
 }
+
+/// Over a 53 x 53 grid of the table's coordinates, every point the spectral solver serves
+/// (docs/theory_spectral.md (B5)): it answers (c to 1e-10, tractions to 1e-8), and c and the
+/// tractions agree with the panels' (an independent discretisation) within the sum of both
+/// estimates. Prints the medians of both solvers' times.
+#[test]
+#[ignore = "slow tier: 600 points, each solved by both solvers"]
+fn spectral_agrees_with_the_panels_on_a_grid() {
+    let patches = crate::stick_edge_table::patches();
+    let span = |f: fn(&crate::stick_edge_table::Patch) -> [f64; 2]| {
+        patches
+            .iter()
+            .map(f)
+            .fold([f64::INFINITY, 0.0f64], |[lo, hi], r| {
+                [lo.min(r[0]), hi.max(r[1])]
+            })
+    };
+    let ([lo_b, hi_b], [lo_z, hi_z]) = (span(|p| p.beta), span(|p| p.zeta));
+    let grid = 53;
+    let (mut spectral_ms, mut panels_ms) = (Vec::new(), Vec::new());
+    for i in 0..grid {
+        for j in 0..grid {
+            let beta = lo_b + (hi_b - lo_b) * (i as f64 + 0.5) / grid as f64;
+            let zeta = lo_z + (hi_z - lo_z) * (j as f64 + 0.5) / grid as f64;
+            let (b, mu) = crate::stick_edge_table::coupling_at(beta, zeta);
+            let k = Coupling { bp: b, bq: b, mu };
+            let t = std::time::Instant::now();
+            let Some(s) = spectral_from_table(&k, 1e-10, 1e-8) else {
+                let served = crate::stick_edge_table::lookup(b, mu)
+                    .is_some_and(|(lc, _)| crate::spectral::serves_at(b, mu, lc));
+                assert!(!served, "({b}, {mu}): served, not answered");
+                continue;
+            };
+            spectral_ms.push(t.elapsed().as_secs_f64() * 1e3);
+            let t = std::time::Instant::now();
+            let p = solve_panels_to(&k, 1e-10, 1e-8).expect("panels");
+            panels_ms.push(t.elapsed().as_secs_f64() * 1e3);
+            let dc = s.edge().distance(p.edge());
+            let dt = crate::problem::traction_distance(&s, &p);
+            assert!(dc <= s.error + p.error, "({b}, {mu}): c apart by {dc:e}");
+            assert!(
+                dt <= s.traction_error + p.traction_error,
+                "({b}, {mu}): tractions apart by {dt:e} (estimates {:e}, {:e})",
+                s.traction_error,
+                p.traction_error
+            );
+        }
+    }
+    let median = |v: &mut Vec<f64>| {
+        v.sort_by(f64::total_cmp);
+        v[v.len() / 2]
+    };
+    let n = spectral_ms.len();
+    eprintln!(
+        "{n} points: spectral median {:.2} ms, panels median {:.2} ms",
+        median(&mut spectral_ms),
+        median(&mut panels_ms)
+    );
+    assert!(n > 500, "only {n} points served");
+}

@@ -110,6 +110,13 @@ impl Spectral {
     }
 }
 
+/// Whether the bases serve the reduced coupling (b*, mu~) near the stick edge lc.
+#[cfg(test)]
+pub(crate) fn serves_at(b: f64, mu: f64, lc: f64) -> bool {
+    let g = 0.5 - (b * mu).atan() / std::f64::consts::PI;
+    serves(Constants { b, mu, g }, lc)
+}
+
 /// sigma at lc for the level's sizes (fixed by the starting c, so that sigma(lc) is smooth).
 fn sigma_at(k: Constants, lc: f64, sizes: Sizes) -> Option<Level> {
     let e = StickEdge::from_logit(lc);
@@ -228,7 +235,8 @@ pub(crate) fn solve(
 /// what the uncertainty of c moves them ([`SAFETY`] times the move per lc times the
 /// uncertainty in lc). Each level also checks the edge: the root its sigma points to,
 /// sigma / slope away, must lie within the bound plus [`SAFETY`] times the two levels'
-/// difference, else None (the root search decides). c keeps its bound as its estimate.
+/// difference, else None (the root search decides); None at once where the move alone
+/// exceeds `traction_tol`. c keeps its bound as its estimate.
 pub(crate) fn at_edge(
     k: Constants,
     lc: f64,
@@ -255,6 +263,11 @@ pub(crate) fn at_edge(
         SAFETY * mp / SLOPE_STEP * uncertainty,
         SAFETY * mq / SLOPE_STEP * uncertainty,
     );
+    if moved.0 + delta * moved.1 > traction_tol {
+        // the bound on c alone moves the tractions by more than the tolerance (thin slip
+        // zones: they move like 1 / (1 - c) per unit of c): the root search decides
+        return None;
+    }
     for level in FIRST_LEVEL + 1..=MAX_LEVEL {
         let cur = sigma_at(k, lc, Sizes::at(level, c, w))?.fixed;
         let offset = (cur.sigma / slope).abs();
