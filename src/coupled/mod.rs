@@ -894,9 +894,9 @@ fn solve_with(
 }
 
 /// The spectral solver ([`crate::spectral`]) from the tabulated stick edge, where the table
-/// covers the reduced coupling below [`MU_EXTRAPOLATE`]: at that edge where its bound meets
-/// `tol` ([`crate::spectral::at_edge`], no root search), else by the root search started
-/// there; None where neither meets the tolerances (the panels answer there).
+/// covers the reduced coupling below [`MU_EXTRAPOLATE`] ([`crate::spectral::from_edge`]: at
+/// that edge where its bound meets `tol`, else by the root search started there); None where
+/// neither meets the tolerances (the panels answer there).
 fn spectral_from_table(k: &Coupling, tol: f64, traction_tol: f64) -> Option<CoupledSolution> {
     if k.bp == 0.0 {
         return None;
@@ -911,8 +911,7 @@ fn spectral_from_table(k: &Coupling, tol: f64, traction_tol: f64) -> Option<Coup
         mu: r.mu,
         g: r.edge_exponent(),
     };
-    let s = crate::spectral::at_edge(consts, lc, bound, tol, traction_tol, delta)
-        .or_else(|| crate::spectral::solve(consts, lc, tol, traction_tol, delta))?;
+    let s = crate::spectral::from_edge(consts, lc, bound, tol, traction_tol, delta)?;
     Some(CoupledSolution {
         coupling: *k,
         edge: s.edge,

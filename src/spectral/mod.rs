@@ -6,10 +6,12 @@
 //! - [`points`]: the collocation points;
 //! - [`system`]: for a trial c, the bordered least-squares system with the constant sigma in
 //!   (E2), whose zero fixes c;
-//! - here: c by the secant method on sigma(lc), lc = ln(c / (1 - c)), from a starting
-//!   guess, at successive levels of the bases' sizes until two levels agree on c and the
-//!   tractions within the tolerances, the equations hold at the collocation points to the
-//!   traction tolerance (R1) and the tractions' rounding noise is small (R2).
+//! - here: c from sigma(lc) = 0, lc = ln(c / (1 - c)), from the tabulated stick edge, at
+//!   successive levels of the bases' sizes until two levels agree on c and the tractions
+//!   within the tolerances (the rounding noise (R2) counted in) and the equations hold at the
+//!   collocation points to the traction tolerance (R1). One solve per level: sigma's slope
+//!   comes from level 1 (at lc and lc + [`SLOPE_STEP`]), and each level's Newton step
+//!   -sigma / slope gives its root (S5).
 //!
 //! Phase one of the rebuild: the solver answers where it converges from the tabulated stick
 //! edge in the mid-range of c; the caller falls back to the panels elsewhere.
@@ -64,18 +66,21 @@ const B_MAX: f64 = 0.99;
 const FIRST_LEVEL: usize = 1;
 const MAX_LEVEL: usize = 10;
 
+/// Levels in a row whose Newton step did not halve after which the root search gives up
+/// where that step alone moves the tractions past the tolerance: thin slip zones, where the
+/// levels' roots jump by about 1e-7 in lc. On the 129 points of a 53 x 53 grid of the
+/// table's coordinates that the first routing's limits left out, at (1e-10, 1e-8): with no
+/// such rule 125 answered and 4 (1 - c = 1.2e-5 .. 2.2e-5) went to the panels after about
+/// 48 ms of levels; with 2, the same 125 answered and the 4 gave up after 12-32 ms; with 1,
+/// 3 more gave up.
+const STALLED_LEVELS: usize = 2;
+
 /// Factor on the distance between two levels' c and tractions in the error estimates.
 const SAFETY: f64 = 2.0;
 
-/// The secant iteration stops when its step in lc falls below this (c to about
-/// 1e-13 c (1 - c)).
-const LC_STEP: f64 = 1e-13;
-
-/// Most chord steps per level.
-const MAX_STEPS: usize = 12;
-
-/// Step in lc of the difference quotient that gives the chord method its slope (sigma moves
-/// by about 3e-5 over it at b* = 0.3, mu~ = 0.5, against a rounding noise below 1e-12).
+/// Step in lc of the difference quotient that gives sigma's slope and the tractions' move per
+/// unit of lc (sigma moves by about 3e-5 over it at b* = 0.3, mu~ = 0.5, against a rounding
+/// noise below 1e-12).
 const SLOPE_STEP: f64 = 1e-3;
 
 /// The solution of one level: its stick edge and the fixed-c system there.
@@ -131,113 +136,14 @@ fn serves(k: Constants, lc: f64) -> bool {
     k.g >= G_MIN && k.b <= B_MAX && e.c >= C_MIN && e.one_minus_c >= W_MIN
 }
 
-/// The root of sigma(lc) at `sizes` by the chord method from `start`: steps -sigma / slope
-/// with one slope per solve (`slope` from a previous level, else the difference quotient over
-/// [`SLOPE_STEP`], far above sigma's rounding noise), until a step falls below [`LC_STEP`]
-/// (the iterate is kept, no further solve), or a step no longer halves |sigma| (the noise
-/// floor: the iterate of smallest |sigma|). Returns the root's level and the slope.
-pub(crate) fn root(
-    k: Constants,
-    start: f64,
-    sizes: Sizes,
-    slope: Option<f64>,
-) -> Option<(Level, f64)> {
-    let mut cur = sigma_at(k, start, sizes)?;
-    let slope = match slope {
-        Some(d) => d,
-        None => {
-            let other = sigma_at(k, start + SLOPE_STEP, sizes)?;
-            let d = (other.fixed.sigma - cur.fixed.sigma) / SLOPE_STEP;
-            if other.fixed.sigma.abs() < cur.fixed.sigma.abs() {
-                cur = other;
-            }
-            d
-        }
-    };
-    if slope == 0.0 || !slope.is_finite() {
-        return None;
-    }
-    for _ in 0..MAX_STEPS {
-        let step = -cur.fixed.sigma / slope;
-        if step.abs() <= LC_STEP * (1.0 + cur.lc.abs()) {
-            return Some((cur, slope));
-        }
-        let next = sigma_at(k, cur.lc + step, sizes)?;
-        if next.fixed.sigma.abs() >= 0.5 * cur.fixed.sigma.abs() {
-            // sigma's noise floor, which is the level's own discretisation error (at b* = 0.3,
-            // mu~ = 0.5: 5e-8 at level 1, 1e-12 at level 4): the comparison of levels
-            // measures what is left
-            return Some((cur, slope));
-        }
-        cur = next;
-    }
-    None
-}
-
-/// Solves the reduced problem from the starting lc until two successive levels agree on c
-/// within `tol` and on the tractions within `traction_tol` (estimates: [`SAFETY`] times the
-/// differences), the traction error weighing dq~ by `delta`; None where no level up to
-/// [`MAX_LEVEL`] gets there or the answer is not admissible.
-pub(crate) fn solve(
-    k: Constants,
-    start: f64,
-    tol: f64,
-    traction_tol: f64,
-    delta: f64,
-) -> Option<Spectral> {
-    if !serves(k, start) {
-        return None;
-    }
-    let mut prev: Option<(Level, f64)> = None;
-    let mut lc = start;
-    let mut slope = None;
-    for level in FIRST_LEVEL..=MAX_LEVEL {
-        let e = StickEdge::from_logit(lc);
-        let sizes = Sizes::at(level, e.c, e.one_minus_c);
-        let (cur, d) = root(k, lc, sizes, slope)?;
-        slope = Some(d);
-        // the level's own uncertainty in lc: the chord step its sigma still asks for
-        let left = (cur.fixed.sigma / d).abs();
-        if let Some((p, p_left)) = &prev {
-            let (ec, ep) = (StickEdge::from_logit(cur.lc), StickEdge::from_logit(p.lc));
-            let error = SAFETY * (ec.distance(ep) + ec.c * ec.one_minus_c * (left + p_left));
-            let (dp, dq) = distance(&cur.fixed, &p.fixed);
-            let parts = (SAFETY * dp, SAFETY * dq);
-            if error <= tol
-                && parts.0 + delta * parts.1 <= traction_tol
-                && cur.fixed.residual <= traction_tol
-            {
-                match verdict(&cur.fixed, k.mu, traction_tol, delta, parts) {
-                    Verdict::Answer(parts) => {
-                        return Some(Spectral {
-                            edge: ec,
-                            error,
-                            traction_parts: parts,
-                            fixed: cur.fixed,
-                            level,
-                        });
-                    }
-                    Verdict::Inadmissible => return None,
-                    Verdict::Noisy => {}
-                }
-            }
-        }
-        lc = cur.lc;
-        prev = Some((cur, left));
-    }
-    None
-}
-
-/// The tractions at a stick edge known within `bound` (in c) of the exact one, `bound`
-/// <= `tol` (the tabulated stick edge): no root search. At level 1 the solutions at lc and
-/// lc + [`SLOPE_STEP`] give sigma's slope and how far the tractions move per unit of lc; then
-/// one solve per level at lc until two levels' tractions agree within `traction_tol`, less
-/// what the uncertainty of c moves them ([`SAFETY`] times the move per lc times the
-/// uncertainty in lc). Each level also checks the edge: the root its sigma points to,
-/// sigma / slope away, must lie within the bound plus [`SAFETY`] times the two levels'
-/// difference, else None (the root search decides); None at once where the move alone
-/// exceeds `traction_tol`. c keeps its bound as its estimate.
-pub(crate) fn at_edge(
+/// The solution from the tabulated stick edge lc, known within `bound` in c: c within `tol`
+/// and the tractions within `traction_tol` (dq~ weighed by `delta`), or None where no level
+/// up to [`MAX_LEVEL`] gets there or the answer is not admissible (the panels answer then).
+///
+/// Level 1 is solved at lc and at lc + [`SLOPE_STEP`]: sigma's slope, and how far the
+/// tractions move per unit of lc. Where `bound` <= `tol`, [`at_fixed_edge`] keeps lc; else,
+/// or where the table's c does not serve, [`newton_ladder`] moves it.
+pub(crate) fn from_edge(
     k: Constants,
     lc: f64,
     bound: f64,
@@ -245,29 +151,66 @@ pub(crate) fn at_edge(
     traction_tol: f64,
     delta: f64,
 ) -> Option<Spectral> {
-    if bound > tol || !serves(k, lc) {
+    if !serves(k, lc) {
         return None;
     }
     let edge = StickEdge::from_logit(lc);
-    let (c, w) = (edge.c, edge.one_minus_c);
-    let first = Sizes::at(FIRST_LEVEL, c, w);
-    let mut prev = sigma_at(k, lc, first)?.fixed;
+    let first = Sizes::at(FIRST_LEVEL, edge.c, edge.one_minus_c);
+    let base = sigma_at(k, lc, first)?;
     let shifted = sigma_at(k, lc + SLOPE_STEP, first)?.fixed;
-    let slope = (shifted.sigma - prev.sigma) / SLOPE_STEP;
+    let slope = (shifted.sigma - base.fixed.sigma) / SLOPE_STEP;
     if slope == 0.0 || !slope.is_finite() {
         return None;
     }
+    let (mp, mq) = distance(&shifted, &base.fixed);
+    let first = First {
+        base,
+        slope,
+        rate: (mp / SLOPE_STEP, mq / SLOPE_STEP),
+    };
+    let fixed = if bound <= tol {
+        at_fixed_edge(k, &first, bound, traction_tol, delta)
+    } else {
+        None
+    };
+    fixed.or_else(|| newton_ladder(k, &first, tol, traction_tol, delta))
+}
+
+/// Level 1 at the starting lc, with sigma's slope and the tractions' move per unit of lc,
+/// (int |dp|, int |dq~|) / dlc.
+struct First {
+    base: Level,
+    slope: f64,
+    rate: (f64, f64),
+}
+
+/// The tractions at the starting lc, whose c is within `bound` of the exact one: one solve per
+/// level at lc until two levels' tractions agree within `traction_tol`, less what the
+/// uncertainty of c moves them ([`SAFETY`] times the move per lc times the uncertainty in lc).
+/// Each level also checks the edge: the root its sigma points to, sigma / slope away, must lie
+/// within the bound plus [`SAFETY`] times the two levels' difference, else None; None at once
+/// where the move alone exceeds `traction_tol`. c keeps its bound as its estimate.
+fn at_fixed_edge(
+    k: Constants,
+    first: &First,
+    bound: f64,
+    traction_tol: f64,
+    delta: f64,
+) -> Option<Spectral> {
+    let (lc, slope) = (first.base.lc, first.slope);
+    let edge = StickEdge::from_logit(lc);
+    let (c, w) = (edge.c, edge.one_minus_c);
     let uncertainty = bound / (c * w);
-    let (mp, mq) = distance(&shifted, &prev);
     let moved = (
-        SAFETY * mp / SLOPE_STEP * uncertainty,
-        SAFETY * mq / SLOPE_STEP * uncertainty,
+        SAFETY * first.rate.0 * uncertainty,
+        SAFETY * first.rate.1 * uncertainty,
     );
     if moved.0 + delta * moved.1 > traction_tol {
         // the bound on c alone moves the tractions by more than the tolerance (thin slip
-        // zones: they move like 1 / (1 - c) per unit of c): the root search decides
+        // zones: they move like 1 / (1 - c) per unit of c)
         return None;
     }
+    let mut prev = first.base.fixed.clone();
     for level in FIRST_LEVEL + 1..=MAX_LEVEL {
         let cur = sigma_at(k, lc, Sizes::at(level, c, w))?.fixed;
         let offset = (cur.sigma / slope).abs();
@@ -293,6 +236,73 @@ pub(crate) fn at_edge(
             }
         }
         prev = cur;
+    }
+    None
+}
+
+/// The root search as a ladder of levels with one solve each: level L is solved at lc_L, its
+/// root is r_L = lc_L - sigma_L / slope (one Newton step with level 1's slope), and
+/// lc_(L+1) = r_L. Level 1's root is only compared, not moved to: the table's c is closer
+/// (at 1 - c = 6e-5 level 1's root was 4e-7 off in lc, the table 1e-8). The estimates, with
+/// d(L, L-1) the distance of two levels' roots in c:
+/// - c: [`SAFETY`] (d(L, L-1) + c (1 - c) (|r_L - lc_L| + |r_(L-1) - lc_(L-1)|)), the roots'
+///   distance and each level's own step, which bounds its Newton step's error;
+/// - tractions: [`SAFETY`] times their distance between the levels (each at its lc) plus
+///   their move over |r_L - lc_L|, since they are those at lc_L.
+fn newton_ladder(
+    k: Constants,
+    first: &First,
+    tol: f64,
+    traction_tol: f64,
+    delta: f64,
+) -> Option<Spectral> {
+    let slope = first.slope;
+    let mut lc = first.base.lc;
+    let mut prev_step = -first.base.fixed.sigma / slope;
+    let mut prev_root = lc + prev_step;
+    let mut prev = first.base.fixed.clone();
+    let mut stalled = 0;
+    for level in FIRST_LEVEL + 1..=MAX_LEVEL {
+        let edge = StickEdge::from_logit(lc);
+        let (c, w) = (edge.c, edge.one_minus_c);
+        let cur = sigma_at(k, lc, Sizes::at(level, c, w))?.fixed;
+        let step = -cur.sigma / slope;
+        let root = lc + step;
+        let distance_c = StickEdge::from_logit(root).distance(StickEdge::from_logit(prev_root));
+        let error = SAFETY * (distance_c + c * w * (step.abs() + prev_step.abs()));
+        let (dp, dq) = distance(&cur, &prev);
+        let parts = (
+            SAFETY * (dp + first.rate.0 * step.abs()),
+            SAFETY * (dq + first.rate.1 * step.abs()),
+        );
+        if error <= tol && parts.0 + delta * parts.1 <= traction_tol && cur.residual <= traction_tol
+        {
+            match verdict(&cur, k.mu, traction_tol, delta, parts) {
+                Verdict::Answer(parts) => {
+                    return Some(Spectral {
+                        edge,
+                        error,
+                        traction_parts: parts,
+                        fixed: cur,
+                        level,
+                    });
+                }
+                Verdict::Inadmissible => return None,
+                Verdict::Noisy => {}
+            }
+        }
+        stalled = if level > FIRST_LEVEL + 1 && step.abs() > 0.5 * prev_step.abs() {
+            stalled + 1
+        } else {
+            0
+        };
+        if stalled >= STALLED_LEVELS
+            && SAFETY * (first.rate.0 + delta * first.rate.1) * step.abs() > traction_tol
+        {
+            return None;
+        }
+        (prev, prev_root, prev_step) = (cur, root, step);
+        lc = root;
     }
     None
 }

@@ -1,4 +1,4 @@
-//! The fixed-c system of the half problem (docs/theory_spectral.md, (S1)-(S4)): for a trial
+//! The fixed-c system of the half problem (docs/theory_spectral.md, (S1)-(S3)): for a trial
 //! stick edge c, the coefficients of the zone bases ([`super::basis`]) and the border
 //! constant sigma that solve, in the least-squares sense at the collocation points
 //! ([`super::points`]),

@@ -11,18 +11,21 @@ fn consts(b: f64, mu: f64) -> Constants {
     }
 }
 
-/// Mid-range scenes (c = 0.04 .. 0.92): c within the tabulated stick edge's bound plus the
-/// estimate (the table was built by the panels, an independent discretisation), and both
-/// estimates hold against a solve to tolerances 100 times tighter.
+/// Mid-range scenes (c = 0.04 .. 0.92), c by the root search (no bound on the starting c):
+/// c within the tabulated stick edge's bound plus the estimate (the table was built by the
+/// panels, an independent discretisation), and both estimates hold against a solve to
+/// tolerances 100 times tighter.
 #[test]
 fn mid_range_meets_its_estimates() {
     for (b, mu) in [(0.3, 0.5), (0.6, 1.0), (0.3, 0.11), (0.45, 0.3), (0.8, 2.0)] {
         let k = consts(b, mu);
         let (lc, bound) = crate::stick_edge_table::lookup(b, mu).expect("tabulated");
         let table = StickEdge::from_logit(lc);
-        let s = solve(k, lc, 1e-8, 1e-6, 1.0).unwrap_or_else(|| panic!("({b}, {mu}): no answer"));
-        let fine =
-            solve(k, lc, 1e-10, 1e-8, 1.0).unwrap_or_else(|| panic!("({b}, {mu}): none at 1e-10"));
+        // no bound: the root search (the Newton ladder) fixes c
+        let s = from_edge(k, lc, f64::INFINITY, 1e-8, 1e-6, 1.0)
+            .unwrap_or_else(|| panic!("({b}, {mu}): no answer"));
+        let fine = from_edge(k, lc, f64::INFINITY, 1e-10, 1e-8, 1.0)
+            .unwrap_or_else(|| panic!("({b}, {mu}): none at 1e-10"));
         eprintln!(
             "b* = {b}, mu~ = {mu}: c = {} (table {} +- {bound:.1e}); estimates {:.1e} / {:.1e} at level {} ({} unknowns), {:.1e} / {:.1e} at level {}",
             fine.edge.c,
@@ -63,7 +66,7 @@ fn residuals_off_the_collocation_points() {
     let (b, mu) = (0.45, 0.3);
     let k = consts(b, mu);
     let (lc, _) = crate::stick_edge_table::lookup(b, mu).expect("tabulated");
-    let s = solve(k, lc, 1e-10, 1e-8, 1.0).expect("answer");
+    let s = from_edge(k, lc, f64::INFINITY, 1e-10, 1e-8, 1.0).expect("answer");
     let f = &s.fixed;
     let (c, w) = (f.basis.c, f.basis.w);
     let mut worst: f64 = 0.0;
@@ -113,8 +116,7 @@ fn sweep(grid: usize) -> (usize, usize, f64) {
                 continue;
             }
             tried += 1;
-            let s =
-                at_edge(k, lc, bound, 1e-10, 1e-8, 1.0).or_else(|| solve(k, lc, 1e-10, 1e-8, 1.0));
+            let s = from_edge(k, lc, bound, 1e-10, 1e-8, 1.0);
             let Some(s) = s else {
                 let e = StickEdge::from_logit(lc);
                 eprintln!(
@@ -151,4 +153,27 @@ fn agrees_with_the_table_on_a_fine_grid() {
     let (answered, tried, worst) = sweep(24);
     eprintln!("answered {answered} of {tried}; largest distance / (bound + estimate) {worst:.2}");
     assert_eq!(answered, tried, "points the bases serve left to the panels");
+}
+
+/// The root search from a starting c off by 1e-6 in lc (about 1e-7 in c): it moves to the
+/// table's c within the table's bound plus its estimate.
+#[test]
+fn newton_ladder_moves_to_the_root() {
+    for (b, mu) in [(0.3, 0.5), (0.45, 0.3)] {
+        let k = consts(b, mu);
+        let (lc, bound) = crate::stick_edge_table::lookup(b, mu).expect("tabulated");
+        for off in [1e-6, -1e-6] {
+            let s = from_edge(k, lc + off, f64::INFINITY, 1e-10, 1e-8, 1.0)
+                .unwrap_or_else(|| panic!("({b}, {mu}) from {off:e}: no answer"));
+            let d = s.edge.distance(StickEdge::from_logit(lc));
+            eprintln!(
+                "({b}, {mu}) from {off:e}: level {}, c off the table by {d:.1e}, estimate {:.1e}",
+                s.level, s.error
+            );
+            assert!(
+                d <= bound + s.error,
+                "({b}, {mu}) from {off:e}: off by {d:e}"
+            );
+        }
+    }
 }
