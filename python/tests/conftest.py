@@ -1,7 +1,8 @@
 """Shared fixtures of the tests of the installed ``orthoslip`` package.
 
-The tests exercise the package as a user has it after ``pip install ./python`` (cargo test
-runs them that way in a fresh virtual environment, see ``tests/python.rs``). C programs
+The tests exercise the package as installed, never the source tree: cargo test's slow tier
+runs them after ``pip install ./python`` in a fresh virtual environment, its fast tier on the
+same layout assembled around the library cargo built (see ``tests/python.rs``). C programs
 built against the very library bundled in the package give the reference results.
 """
 

@@ -11,8 +11,8 @@ use std::process::Command;
 /// The routes and the tests that run them; a mark naming another route is an error.
 pub const ROUTES: [&str; 4] = [
     "packaging",      // tests/packaging.rs: C/CMake, pkg-config, C++, Fortran
-    "python-install", // tests/python.rs: installs the package (run in the checkout)
-    "python",         // tests/python.rs: scripts run in the virtual environment
+    "python-install", // tests/python.rs, slow tier: installs the package (run in the checkout)
+    "python",         // tests/python.rs, both tiers: scripts run in the virtual environment
     "cli",            // tests/cli.rs: the command-line tool
 ];
 

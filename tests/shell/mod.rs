@@ -6,9 +6,9 @@ use std::process::Command;
 use std::time::Instant;
 
 /// The cargo target directory of the tests that build the library again, in release mode
-/// without the `cli` feature: tests/packaging.rs (through CMake) and tests/python.rs (through
-/// maturin). It is kept between runs, and as both builds share every dependency, whichever
-/// runs second compiles only this crate.
+/// without the `cli` feature: tests/packaging.rs (through CMake) and the slow tier's wheel
+/// test in tests/python.rs (through maturin). It is kept between runs, and as both builds
+/// share every dependency, whichever runs second compiles only this crate.
 pub fn library_target_dir() -> PathBuf {
     PathBuf::from(env!("CARGO_TARGET_TMPDIR")).join("library-target")
 }
