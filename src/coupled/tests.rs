@@ -787,6 +787,20 @@ fn later_roots_are_the_inadmissible_ones() {
     }
 }
 
+/// c and the tractions of two solutions of the reduced coupling (b*, mu~) within the sum of
+/// their estimates.
+fn assert_agree(s: &CoupledSolution, p: &CoupledSolution, b: f64, mu: f64) {
+    let dc = s.edge().distance(p.edge());
+    let dt = crate::problem::traction_distance(s, p);
+    assert!(dc <= s.error + p.error, "({b}, {mu}): c apart by {dc:e}");
+    assert!(
+        dt <= s.traction_error + p.traction_error,
+        "({b}, {mu}): tractions apart by {dt:e} (estimates {:e}, {:e})",
+        s.traction_error,
+        p.traction_error
+    );
+}
+
 /// The spectral solver (global bases per zone) against the panels, an independent
 /// discretisation, on mid-range scenes of the reduced plane and at the limits the spectral
 /// solver serves (docs/theory_spectral.md (B5)): c and the tractions within the
@@ -807,15 +821,7 @@ fn spectral_agrees_with_the_panels() {
         assert_eq!(s.regime(), "spectral", "({b}, {mu})");
         let p = solve_panels_to(&k, 1e-10, 1e-8).expect("panels");
         assert_eq!(p.regime(), "panels", "({b}, {mu})");
-        let dc = s.edge().distance(p.edge());
-        let dt = crate::problem::traction_distance(&s, &p);
-        assert!(dc <= s.error + p.error, "({b}, {mu}): c apart by {dc:e}");
-        assert!(
-            dt <= s.traction_error + p.traction_error,
-            "({b}, {mu}): tractions apart by {dt:e} (estimates {:e}, {:e})",
-            s.traction_error,
-            p.traction_error
-        );
+        assert_agree(&s, &p, b, mu);
     }
 }
 
@@ -859,15 +865,7 @@ fn spectral_agrees_with_the_panels_on_a_grid() {
             let t = std::time::Instant::now();
             let p = solve_panels_to(&k, 1e-10, 1e-8).expect("panels");
             panels_ms.push(t.elapsed().as_secs_f64() * 1e3);
-            let dc = s.edge().distance(p.edge());
-            let dt = crate::problem::traction_distance(&s, &p);
-            assert!(dc <= s.error + p.error, "({b}, {mu}): c apart by {dc:e}");
-            assert!(
-                dt <= s.traction_error + p.traction_error,
-                "({b}, {mu}): tractions apart by {dt:e} (estimates {:e}, {:e})",
-                s.traction_error,
-                p.traction_error
-            );
+            assert_agree(&s, &p, b, mu);
         }
     }
     let median = |v: &mut Vec<f64>| {
