@@ -118,6 +118,43 @@ static orthoslip_history *loaded(const orthoslip_contact *k, double q_over_p)
     return h;
 }
 
+#ifdef __cplusplus
+/* The C++ build also checks the RAII wrapper (c_examples/orthoslip.hpp): history::solution()
+ * gives the C call's numbers, and the refused getters throw with the status. */
+#include "orthoslip.hpp"
+
+static void cxx_wrapper(void)
+{
+    const auto mat = orthoslip::material::effective(1.0, NU, 1.0, 1.0);
+    orthoslip::contact k(mat);
+    k.friction(MU);
+    orthoslip::cycle_options o;
+    o.panels(16).steps(2);
+    auto h = k.history(o);
+    h.load(LOAD);
+    const auto s = h.solution();
+    const auto z = s.stick_zone();
+    const auto hz = h.stick_zone();
+    CHECK(z.c1 == hz.c1 && z.c2 == hz.c2 && z.error == hz.error);
+    orthoslip_solution *raw = NULL;
+    double x = 0.3, y = -0.2, p, q, a, b, c;
+    CHECK_OK(orthoslip_history_solution(h.get(), &raw));
+    CHECK_OK(orthoslip_solution_tractions(raw, &x, 1, &p, &q));
+    CHECK_OK(orthoslip_solution_stresses(raw, &x, &y, 1, &a, &b, &c));
+    orthoslip_solution_free(raw);
+    const auto t = s.at({x});
+    const auto st = s.stresses({x}, {y});
+    CHECK(t.p[0] == p && t.q[0] == q && st.sxx[0] == a && st.syy[0] == b && st.sxy[0] == c);
+    int thrown = 0;
+    try {
+        (void)s.stick_half_width();
+    } catch (const orthoslip::error &ex) {
+        thrown = ex.status() == ORTHOSLIP_ERROR_INVALID_ARGUMENT;
+    }
+    CHECK(thrown);
+}
+#endif
+
 int main(void)
 {
     orthoslip_material *mat = NULL;
@@ -268,6 +305,9 @@ int main(void)
     gsl_integration_qaws_table_free(left);
     gsl_integration_qaws_table_free(right);
     gsl_integration_workspace_free(ws);
+#ifdef __cplusplus
+    cxx_wrapper();
+#endif
     printf("history_solution: all checks passed\n");
     return 0;
 }
