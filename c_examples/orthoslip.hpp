@@ -67,6 +67,10 @@ struct stresses {
 struct edge_intensity {
     double k, g;
 };
+/// A stick set [c1, c2] and the estimate of its ends' error.
+struct stick_zone {
+    double c1, c2, error;
+};
 
 class solution {
   public:
@@ -82,6 +86,13 @@ class solution {
         orthoslip_method used;
         check(orthoslip_solution_method(h_.get(), &used));
         return used;
+    }
+    /// The stick set [c1, c2] ([-c, c] for a normal-load solution) and error_estimate().
+    orthoslip::stick_zone stick_zone() const {
+        orthoslip::stick_zone z{};
+        check(orthoslip_solution_stick_zone(h_.get(), &z.c1, &z.c2));
+        z.error = error_estimate();
+        return z;
     }
     /// p(x), q(x) at `x` (units of the punch half-width).
     tractions at(const std::vector<double> &x) const {
@@ -122,6 +133,7 @@ class solution {
 
   private:
     friend class contact;
+    friend class history;
     explicit solution(orthoslip_solution *raw) : h_(raw) {}
     double get(orthoslip_status (*f)(const orthoslip_solution *, double *)) const {
         double v;
@@ -197,10 +209,6 @@ class cycle_options {
     detail::handle<orthoslip_cycle_options, orthoslip_cycle_options_free> h_;
 };
 
-/// A stick set [c1, c2] and the estimate of its ends' error.
-struct stick_zone {
-    double c1, c2, error;
-};
 /// A value with its error estimate.
 struct estimate {
     double value, error;
@@ -238,6 +246,13 @@ class history {
         estimate e{};
         check(orthoslip_history_dissipated_energy(h_.get(), &e.value, &e.error));
         return e;
+    }
+    /// The current state as a solution (no single c, edge intensity or slip: those getters
+    /// throw ORTHOSLIP_ERROR_INVALID_ARGUMENT; stick_zone() gives [c1, c2]).
+    orthoslip::solution solution() const {
+        orthoslip_solution *raw = nullptr;
+        check(orthoslip_history_solution(h_.get(), &raw));
+        return orthoslip::solution(raw);
     }
     const orthoslip_history *get() const noexcept { return h_.get(); }
 

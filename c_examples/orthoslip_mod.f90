@@ -59,7 +59,7 @@ module orthoslip_mod
        orthoslip_cycles_stress_peaks, orthoslip_cycles_ruiz_peaks, &
        orthoslip_cycles_stick_zones, orthoslip_cycles_loop_length, &
        orthoslip_cycles_loop, orthoslip_cycles_loop_error, orthoslip_cycles_energy_balance, &
-       orthoslip_cycles_step, orthoslip_cycles_step_tractions
+       orthoslip_cycles_step, orthoslip_cycles_step_tractions, orthoslip_history_solution
   public :: last_error_message, status_name, version
 
   interface
@@ -615,6 +615,14 @@ module orthoslip_mod
       real(c_double), intent(out) :: p(*)
       real(c_double), intent(out) :: q(*)
       integer(c_int), intent(out) :: zone(*)
+      integer(c_int) :: status
+    end function
+
+    function orthoslip_history_solution(h, out) &
+         bind(c, name="orthoslip_history_solution") result(status)
+      import :: c_int, c_ptr
+      type(c_ptr), value :: h
+      type(c_ptr), intent(out) :: out
       integer(c_int) :: status
     end function
 

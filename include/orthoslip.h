@@ -419,7 +419,9 @@ void orthoslip_solution_free(orthoslip_solution *s);
  * Writes the stick half-width c (0 <= c < 1, units of the punch half-width a): the solid
  * sticks to the punch on |x| < c and slips on c < |x| < 1.
  *
- * Returns ORTHOSLIP_OK or ORTHOSLIP_ERROR_NULL_POINTER (nothing written).
+ * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER or ORTHOSLIP_ERROR_INVALID_ARGUMENT
+ * (a load-path state from `orthoslip_history_solution`: no single c, its stick set is
+ * `orthoslip_solution_stick_zone`'s [c1, c2]); nothing written on failure.
  *
  * # Safety
  * `s` must be NULL or a live solution; `c` NULL or valid for one write.
@@ -430,7 +432,9 @@ orthoslip_status orthoslip_solution_stick_half_width(const orthoslip_solution *s
  * Writes the slip-zone width 1 - c (units of a) with full relative accuracy, also when c is
  * within 1e-9 or less of 1 (it is never computed as 1 - c in floating point).
  *
- * Returns ORTHOSLIP_OK or ORTHOSLIP_ERROR_NULL_POINTER (nothing written).
+ * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER or ORTHOSLIP_ERROR_INVALID_ARGUMENT
+ * (a load-path state from `orthoslip_history_solution`: no single c); nothing written on
+ * failure.
  *
  * # Safety
  * `s` must be NULL or a live solution; `one_minus_c` NULL or valid for one write.
@@ -443,6 +447,8 @@ orthoslip_status orthoslip_solution_slip_width(const orthoslip_solution *s, doub
  * sigma_xy(x, 0) = (P/a) q(x/a) (paper eq. (6)); int p dx = 1, q is odd and positive for
  * x > c. For |x| > 1, p = q = 0; at |x| = 1 the punch-edge singularity
  * p ~ (1 - |x|)^(-g) is reported as p = +INFINITY, q = +-INFINITY (0 when mu = 0).
+ * A load-path state (`orthoslip_history_solution`): p and q without symmetry,
+ * int q dx = Q/P, q at x = +-1 infinite of the sign of q next to that edge.
  * `x` may alias `p` or `q` (in-place evaluation).
  *
  * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER (any pointer NULL, also when n = 0) or
@@ -477,7 +483,9 @@ orthoslip_status orthoslip_solution_method(const orthoslip_solution *s, orthosli
  * measured by COUPLED at the surrounding points of a table computed offline, plus 1e-10;
  * validated at random points off the table, not certified), +INFINITY where the table gives
  * no bound (outside its range of b* = 0.005 .. 0.99, or where the exact solver failed
- * nearby). Never NaN.
+ * nearby). Never NaN. A load-path state (`orthoslip_history_solution`): the estimate of
+ * the error of its stick set's ends c1, c2 (the larger; +INFINITY if the half-panel grid
+ * failed).
  *
  * Returns ORTHOSLIP_OK or ORTHOSLIP_ERROR_NULL_POINTER (nothing written).
  *
@@ -495,7 +503,8 @@ orthoslip_status orthoslip_solution_error_estimate(const orthoslip_solution *s, 
  * there, this one O(mu p(c) dc).
  * COUPLED: from its last two orders; LCP: from its last two grids; GOODMAN and SPENCE: an
  * empirical model-error bound (a table measured offline against COUPLED, validated off its
- * grid, not certified), +INFINITY where the table gives no bound. Never NaN.
+ * grid, not certified), +INFINITY where the table gives no bound. Never NaN. A load-path
+ * state (`orthoslip_history_solution`): `orthoslip_history_traction_error_estimate`'s.
  *
  * Returns ORTHOSLIP_OK or ORTHOSLIP_ERROR_NULL_POINTER (nothing written).
  *
@@ -515,6 +524,8 @@ orthoslip_status orthoslip_solution_traction_error_estimate(const orthoslip_solu
  * those of its own tractions (Lekhnistskii's potentials of the half-plane). Near the
  * surface at the punch edge, sxx(x, 0) ~ -k [delta^2 + (1 - nu) mu^2] (1 - |x|)^(-g) with the
  * (k, g) of orthoslip_solution_edge_intensity (GOODMAN: -k delta^2 (1 - |x|)^(-1/2)).
+ * A load-path state (`orthoslip_history_solution`): the field of its tractions without
+ * symmetry (at x = +-1 on the surface sxy is infinite of the sign of q next to that edge).
  * `x` or `y` may alias an output (in-place evaluation).
  *
  * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER (any pointer NULL, also when n = 0) or
@@ -538,7 +549,9 @@ orthoslip_status orthoslip_solution_stresses(const orthoslip_solution *s,
  * |x| -> 1, k dimensionless per P/a; on a slip edge q ~ mu p sgn x. g = 1/2 - arctan(bp mu)/pi
  * (GOODMAN, whose p = 1/(pi sqrt(1 - x^2)) ignores the coupling: g = 1/2, k = 1/(pi sqrt 2)).
  *
- * Returns ORTHOSLIP_OK or ORTHOSLIP_ERROR_NULL_POINTER (nothing written).
+ * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER or ORTHOSLIP_ERROR_INVALID_ARGUMENT
+ * (a load-path state from `orthoslip_history_solution`: its two edges have different
+ * singularities, which its grid does not resolve); nothing written on failure.
  *
  * # Safety
  * `s` must be NULL or a live solution; `k` and `g` NULL or valid for one write each.
@@ -556,8 +569,9 @@ orthoslip_status orthoslip_solution_edge_intensity(const orthoslip_solution *s,
  * `x` may alias `slip` (in-place evaluation).
  *
  * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER (any pointer NULL, also when n = 0) or
- * ORTHOSLIP_ERROR_INVALID_ARGUMENT (some x[i] NaN or infinite); on failure nothing is
- * written.
+ * ORTHOSLIP_ERROR_INVALID_ARGUMENT (some x[i] NaN or infinite, or a load-path state from
+ * `orthoslip_history_solution`, whose slip depends on its path and not on its tractions
+ * alone); on failure nothing is written.
  *
  * # Safety
  * `s` must be NULL or a live solution; `x` NULL or valid for n reads; `slip` NULL or valid
@@ -643,7 +657,8 @@ orthoslip_status orthoslip_cycle_options_set_repeat_tolerance(orthoslip_cycle_op
                                                               double tol);
 
 /**
- * The stick set [c1, c2] of a normal-load solution: c1 = -c, c2 = c.
+ * The stick set [c1, c2] of a normal-load solution: c1 = -c, c2 = c; of a load-path state
+ * (`orthoslip_history_solution`): its own (as `orthoslip_history_stick_zone`).
  *
  * Returns ORTHOSLIP_OK or ORTHOSLIP_ERROR_NULL_POINTER (nothing written).
  *
@@ -1112,6 +1127,33 @@ orthoslip_status orthoslip_cycles_loop_error(const orthoslip_cycles *cy,
                                              size_t cycle,
                                              double *u_err,
                                              double *work_err);
+
+/**
+ * The current state as a solution: tractions, stresses, slip and estimates through the
+ * existing getters (`orthoslip_solution_*`; method ORTHOSLIP_METHOD_LCP). The state is
+ * copied: `h` may be loaded further or freed, the solution keeps this state.
+ * - `orthoslip_solution_tractions`: p and q on [-1, 1] without symmetry, the grid's panel
+ *   values presented as the normal-load LCP solution presents its own (regular parts
+ *   p / w, q / w linear between the midpoints, w = (1 - |x|)^(-g) with the normal-load edge
+ *   exponent g); at Q = 0 they are the normal-load LCP solution's on the same grid.
+ * - `orthoslip_solution_stresses`: the field of these tractions (no symmetry assumed).
+ * - `orthoslip_solution_stick_zone`: the stick set [c1, c2] (NaN when nothing sticks);
+ *   `orthoslip_solution_error_estimate`: its ends' error estimate;
+ *   `orthoslip_solution_traction_error_estimate`: the history's traction error estimate.
+ * - Refused with ORTHOSLIP_ERROR_INVALID_ARGUMENT (no single value describes an asymmetric
+ *   state): `orthoslip_solution_stick_half_width`, `orthoslip_solution_slip_width`,
+ *   `orthoslip_solution_edge_intensity` (the two edges differ) and
+ *   `orthoslip_solution_slip` (a state's slip depends on its load path, not on its
+ *   tractions alone; the history's slip increments are in `orthoslip_history_tractions`'
+ *   zones).
+ *
+ * On success `*out` owns a new handle, to be released with `orthoslip_solution_free`.
+ * Returns ORTHOSLIP_OK or ORTHOSLIP_ERROR_NULL_POINTER; on failure `*out` is set to NULL.
+ *
+ * # Safety
+ * `h` must be NULL or a live history; `out` NULL or valid for writing one pointer.
+ */
+orthoslip_status orthoslip_history_solution(const orthoslip_history *h, orthoslip_solution **out);
 
 #ifdef __cplusplus
 }  // extern "C"

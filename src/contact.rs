@@ -180,6 +180,7 @@ impl Contact {
             traction_error,
             profile,
             material: self.material,
+            stick_set: None,
             field: OnceLock::new(),
         })
     }
@@ -253,6 +254,10 @@ pub struct Solution {
     c_error: f64,
     traction_error: f64,
     material: Material,
+    /// The stick set [c1, c2] of a state without symmetry (a load-path state,
+    /// [`crate::LoadPath::solution`]); None for the normal-load solutions, whose stick set is
+    /// [-c, c].
+    stick_set: Option<(f64, f64)>,
     /// The stress field, built on first use (then read-only: safe from many threads).
     field: OnceLock<Field>,
 }
@@ -262,6 +267,56 @@ trait Solved: Profile + Expand {}
 impl<T: Profile + Expand> Solved for T {}
 
 impl Solution {
+    /// A solution of tractions without symmetry (`profile`'s expansion tiles [-1, 1]) with
+    /// stick set `stick_set`, the estimates of its ends' error and of the traction error.
+    pub(crate) fn asymmetric<T: Profile + Expand + 'static>(
+        method: Method,
+        profile: T,
+        stick_set: (f64, f64),
+        c_error: f64,
+        traction_error: f64,
+        material: Material,
+    ) -> Self {
+        Self {
+            method,
+            profile: Box::new(profile),
+            c_error,
+            traction_error,
+            material,
+            stick_set: Some(stick_set),
+            field: OnceLock::new(),
+        }
+    }
+
+    /// Whether the tractions are symmetric (p even, q odd: the normal-load solutions of
+    /// [`Contact::solve`]); false for a load-path state ([`crate::LoadPath::solution`]),
+    /// which has no single stick half-width c, no edge intensity common to both edges and no
+    /// slip function of its tractions alone.
+    pub fn is_symmetric(&self) -> bool {
+        self.stick_set.is_none()
+    }
+
+    /// The stick set [c1, c2]: (-c, c) for a symmetric solution; a load-path state's own
+    /// (NaN, NaN when nothing sticks).
+    pub fn stick_set(&self) -> (f64, f64) {
+        self.stick_set.unwrap_or_else(|| {
+            let c = self.c();
+            (-c, c)
+        })
+    }
+
+    /// `Err(InvalidArgument)` naming `what` for a solution without symmetry.
+    pub(crate) fn require_symmetric(&self, what: &str) -> Result<()> {
+        if self.is_symmetric() {
+            Ok(())
+        } else {
+            Err(Error::InvalidArgument(format!(
+                "{what} is defined for a symmetric (normal-load) solution only; this is a \
+                 load-path state without symmetry (stick set [c1, c2]: use the stick zone)"
+            )))
+        }
+    }
+
     /// The method that produced this solution (never [`Method::Auto`]).
     pub fn method(&self) -> Method {
         self.method
@@ -272,7 +327,8 @@ impl Solution {
         self.profile.edge()
     }
 
-    /// The stick half-width c (units of the punch half-width).
+    /// The stick half-width c (units of the punch half-width); NaN for a load-path state
+    /// ([`Solution::is_symmetric`] false: see [`Solution::stick_set`]).
     pub fn c(&self) -> f64 {
         self.edge().c
     }
@@ -337,8 +393,12 @@ impl Solution {
     /// The punch-edge singularity of this solution's pressure: p ~ k (1 - |x|)^(-g) as
     /// |x| -> 1, (k, g) with k per P/a. On a slip edge q ~ mu p sgn x. g is the method's own
     /// exponent: 1/2 - arctan(bp mu) / pi, and 1/2 for GOODMAN (whose p = 1/(pi sqrt(1 - x^2))
-    /// has k = 1/(pi sqrt 2)).
+    /// has k = 1/(pi sqrt 2)). (NaN, NaN) for a load-path state, whose two edges differ
+    /// ([`Solution::is_symmetric`]).
     pub fn edge_intensity(&self) -> (f64, f64) {
+        if !self.is_symmetric() {
+            return (f64::NAN, f64::NAN);
+        }
         self.field().edge_intensity()
     }
 
@@ -347,8 +407,10 @@ impl Solution {
     /// unit thickness): 0 on the stick zone, the slip on the slip zones (negative for x > c:
     /// the solid slides inward), odd in x; beyond the punch the surface displacement.
     ///
-    /// Errors: `InvalidArgument` for NaN or infinite x.
+    /// Errors: `InvalidArgument` for NaN or infinite x, and for a load-path state (its slip
+    /// depends on the path, not on its tractions alone: [`Solution::is_symmetric`]).
     pub fn slip(&self, x: f64) -> Result<f64> {
+        self.require_symmetric("the slip function")?;
         if !x.is_finite() {
             return Err(Error::InvalidArgument(format!("x = {x} is not finite")));
         }

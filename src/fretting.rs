@@ -25,10 +25,13 @@
 
 use std::f64::consts::PI;
 
-use crate::contact::Contact;
+use crate::contact::{Contact, Method, Solution};
 use crate::error::{Error, Result};
+use crate::field::{Expand, Expansion, Family, Panel, fit};
 use crate::lcp::history::{self, History, State};
-use crate::problem::Coupling;
+use crate::material::Material;
+use crate::numerics::cauchy::Weight;
+use crate::problem::{Coupling, Profile, StickEdge};
 
 pub use crate::lcp::history::Zone;
 
@@ -685,6 +688,7 @@ fn panel_index(m: usize, x: f64) -> usize {
 /// after another ([`LoadPath::load`]). A second grid with half the panels runs alongside for
 /// the error estimates (first order: their difference estimates the error).
 pub struct LoadPath {
+    material: Material,
     fine: History,
     coarse: Option<History>,
     steps: usize,
@@ -707,6 +711,7 @@ impl LoadPath {
         let fine = History::new(&k, options.panels)?;
         let coarse = History::new(&k, options.panels / 2).ok();
         Ok(Self {
+            material: *contact.material(),
             fine,
             coarse,
             steps: options.steps,
@@ -804,6 +809,201 @@ impl LoadPath {
     /// The panel value at x in [-1, 1] of a profile at the nodes (see [`Fretting::at`]).
     pub fn at(&self, profile: &[f64], x: f64) -> Result<f64> {
         panel_value(profile, x)
+    }
+
+    /// The current state as a [`Solution`] (method [`Method::Lcp`]): its tractions on
+    /// [-1, 1] as the normal-load LCP solution presents its grid ([`StateProfile`]), the
+    /// stick set [c1, c2] ([`Solution::stick_set`]) with the estimate of its ends' error as
+    /// [`Solution::error_estimate`], [`LoadPath::traction_error`] as
+    /// [`Solution::traction_error_estimate`], and the stresses of the field of these
+    /// tractions without symmetry. At Q = 0 its tractions and stresses are those of the
+    /// normal-load LCP solution on the same grid (to rounding). It has no single stick
+    /// half-width, edge intensity or slip function ([`Solution::is_symmetric`] is false).
+    pub fn solution(&self) -> Solution {
+        let s = self.fine.state();
+        let ((c1, c2), stick_error) = self.stick_zone();
+        let profile = StateProfile::new(self.fine.coupling(), &s.p, &s.q, stick_error);
+        Solution::asymmetric(
+            Method::Lcp,
+            profile,
+            (c1, c2),
+            stick_error,
+            self.traction_error(),
+            self.material,
+        )
+    }
+}
+
+/// A load-path state's panel values on [-1, 1] presented as the normal-load LCP presents its
+/// grid (`crate::lcp`'s `half_line_tractions`, over the whole line): the regular parts
+/// p / w, q / w, with w = (1 - |x|)^(-g) and g the normal-load edge exponent
+/// ([`Coupling::edge_exponent`]; each panel value divided by the panel average of w), taken
+/// linearly between the panel midpoints and constant beyond the outermost ones. The grid's
+/// values are first order; under load the edges' own exponents (which differ at the two
+/// edges) are not resolved by it, and w serves as the shape of the end panels only.
+#[derive(Clone, Debug)]
+pub(crate) struct StateProfile {
+    coupling: Coupling,
+    /// Panels per half-width.
+    n: usize,
+    /// The midpoints, in the normal-load grid's form +-(j + 1/2) h (mirror images exactly).
+    nodes: Vec<f64>,
+    /// Regular parts of p and q at the midpoints.
+    rp: Vec<f64>,
+    rq: Vec<f64>,
+    stick_error: f64,
+}
+
+impl StateProfile {
+    fn new(coupling: Coupling, p: &[f64], q: &[f64], stick_error: f64) -> Self {
+        let m = p.len();
+        let n = m / 2;
+        let h = 1.0 / n as f64;
+        let g = coupling.edge_exponent();
+        // distance index from the centre: panel i covers [j h, (j + 1) h] on its side
+        let side = |i: usize| if i >= n { i - n } else { n - 1 - i };
+        let average = |i: usize| {
+            let j = side(i);
+            let (a, b) = (j as f64 * h, (j + 1) as f64 * h);
+            ((1.0 - a).powf(1.0 - g) - (1.0 - b).powf(1.0 - g)) / ((1.0 - g) * h)
+        };
+        let nodes = (0..m)
+            .map(|i| {
+                let x = (side(i) as f64 + 0.5) * h;
+                if i >= n { x } else { -x }
+            })
+            .collect();
+        Self {
+            coupling,
+            n,
+            nodes,
+            rp: (0..m).map(|i| p[i] / average(i)).collect(),
+            rq: (0..m).map(|i| q[i] / average(i)).collect(),
+            stick_error,
+        }
+    }
+
+    /// The regular parts (p / w, q / w) at x in [-1, 1].
+    fn regular(&self, x: f64) -> (f64, f64) {
+        let m = self.nodes.len();
+        if x <= self.nodes[0] {
+            return (self.rp[0], self.rq[0]);
+        }
+        if x >= self.nodes[m - 1] {
+            return (self.rp[m - 1], self.rq[m - 1]);
+        }
+        // the midpoint at or left of x: by distance from the centre, as the normal-load grid
+        let h = 1.0 / self.n as f64;
+        let u = x.abs() / h - 0.5;
+        let (j, theta) = if x >= self.nodes[self.n] {
+            let j = (u.floor().max(0.0) as usize).min(self.n - 2);
+            (self.n + j, (u - j as f64).clamp(0.0, 1.0))
+        } else if x <= self.nodes[self.n - 1] {
+            // mirrored: between n - 2 - k and n - 1 - k with k = floor(u)
+            let k = (u.floor().max(0.0) as usize).min(self.n - 2);
+            (self.n - 2 - k, 1.0 - (u - k as f64).clamp(0.0, 1.0))
+        } else {
+            // across the centre, between the two innermost midpoints
+            let (a, b) = (self.nodes[self.n - 1], self.nodes[self.n]);
+            (self.n - 1, ((x - a) / (b - a)).clamp(0.0, 1.0))
+        };
+        let lerp = |v: &[f64]| (1.0 - theta) * v[j] + theta * v[j + 1];
+        (lerp(&self.rp), lerp(&self.rq))
+    }
+}
+
+impl Profile for StateProfile {
+    fn coupling(&self) -> Coupling {
+        self.coupling
+    }
+    /// No single stick half-width: NaN (the stick set is the solution's).
+    fn edge(&self) -> StickEdge {
+        StickEdge {
+            c: f64::NAN,
+            one_minus_c: f64::NAN,
+        }
+    }
+    fn numerical_error(&self) -> f64 {
+        self.stick_error
+    }
+    fn traction_error(&self) -> f64 {
+        f64::INFINITY
+    }
+    fn half_line_tractions(&self, x: f64) -> (f64, f64) {
+        self.tractions(x)
+    }
+    /// (p, q) at any x (not NaN): zero outside the punch, p = +infinity at x = +-1 with q
+    /// infinite of the sign of the end panel's q (0 where that is 0).
+    fn tractions(&self, x: f64) -> (f64, f64) {
+        let ax = x.abs();
+        if ax > 1.0 {
+            return (0.0, 0.0);
+        }
+        let (rp, rq) = self.regular(x);
+        if ax == 1.0 {
+            let q = if rq == 0.0 {
+                0.0
+            } else {
+                f64::INFINITY.copysign(rq)
+            };
+            return (f64::INFINITY, q);
+        }
+        let t = ax.min(1.0 - f64::EPSILON);
+        let w = (1.0 - t).powf(-self.coupling.edge_exponent());
+        (w * rp, w * rq)
+    }
+}
+
+/// Panels between the midpoints (split at 0, where w has its kink), fitted in Legendre
+/// series; the end panels [-1, x_0] and [x_(2n-1), 1] one family each, weighted
+/// (1 + t)^(-g) and (1 - t)^(-g) (as the normal-load LCP's last panel).
+impl Expand for StateProfile {
+    fn expansion(&self) -> Expansion {
+        let m = self.nodes.len();
+        let mut breaks = vec![-1.0];
+        breaks.extend_from_slice(&self.nodes[..self.n]);
+        breaks.push(0.0);
+        breaks.extend_from_slice(&self.nodes[self.n..]);
+        breaks.push(1.0);
+        let g = self.coupling.edge_exponent();
+        let panels = breaks
+            .windows(2)
+            .map(|w| {
+                let (a, b) = (w[0], w[1]);
+                let (mid, r) = (0.5 * (a + b), 0.5 * (b - a));
+                let end = |i: usize, weight: Weight| {
+                    let scale = r.powf(-g);
+                    Family {
+                        weight,
+                        p: vec![scale * self.rp[i]],
+                        q: vec![scale * self.rq[i]],
+                    }
+                };
+                let family = if a == -1.0 {
+                    end(0, Weight::Left(-g))
+                } else if b == 1.0 {
+                    end(m - 1, Weight::Right(-g))
+                } else {
+                    let at = |t: f64| self.tractions(mid + r * t);
+                    Family {
+                        weight: Weight::One,
+                        p: fit(|t| at(t).0),
+                        q: fit(|t| at(t).1),
+                    }
+                };
+                Panel {
+                    a,
+                    b,
+                    families: vec![family],
+                }
+            })
+            .collect();
+        Expansion { panels }
+    }
+
+    /// The two edges differ: none.
+    fn edge_intensity(&self, _: &Expansion) -> Option<(f64, f64)> {
+        None
     }
 }
 

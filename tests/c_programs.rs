@@ -171,7 +171,7 @@ fn memcheck(exe: &Path, name: &str) {
 }
 
 /// The C test programs (tests/c/<name>.c) built and run by [`check_program`].
-const PROGRAMS: [&str; 11] = [
+const PROGRAMS: [&str; 12] = [
     "goodman_c",
     "goodman_residuals",
     "errors",
@@ -183,6 +183,7 @@ const PROGRAMS: [&str; 11] = [
     "field_slip",
     "field_errors",
     "traction_tolerance",
+    "history_solution",
 ];
 
 /// The programs whose valgrind run is the slow tier's ([`under_valgrind`]): each of their
@@ -308,6 +309,11 @@ fn fretting() {
 #[test]
 fn traction_tolerance() {
     check_program("traction_tolerance");
+}
+
+#[test]
+fn history_solution() {
+    check_program("history_solution");
 }
 
 /// Runs the hostile-input program (tests/c/hostile.c) with `draws` draws from `seed`; `full`

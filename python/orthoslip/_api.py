@@ -256,6 +256,10 @@ class Solution:
     """A solved contact: the stick zone is ``|x| < c``, the slip zones ``c < |x| < 1``, with
     x in units of the punch half-width a.
 
+    A load-path state (:meth:`History.solution`) has no symmetry: its stick set is
+    :attr:`stick_zone` ``(c1, c2)``, and ``c``, ``slip_width``, :meth:`edge_intensity` and
+    :meth:`slip` raise :class:`InvalidArgumentError`.
+
     Attributes:
         c: the stick half-width c (0 <= c < 1).
         slip_width: 1 - c with full relative accuracy (never computed as 1 - c).
@@ -269,13 +273,37 @@ class Solution:
     def __init__(self, handle: Any) -> None:
         """Wraps an owned ``orthoslip_solution *``; use :meth:`Contact.solve` instead."""
         self._handle = handle
-        self.c: float = get("double", lib.orthoslip_solution_stick_half_width, handle)
-        self.slip_width: float = get("double", lib.orthoslip_solution_slip_width, handle)
         self.method = Method(get("orthoslip_method", lib.orthoslip_solution_method, handle))
         self.error_estimate: float = get("double", lib.orthoslip_solution_error_estimate, handle)
         self.traction_error_estimate: float = get(
             "double", lib.orthoslip_solution_traction_error_estimate, handle
         )
+
+    @property
+    def c(self) -> float:
+        """The stick half-width c (0 <= c < 1).
+
+        Raises:
+            InvalidArgumentError: a load-path state (no single c: see :attr:`stick_zone`).
+        """
+        return float(get("double", lib.orthoslip_solution_stick_half_width, self._handle))
+
+    @property
+    def slip_width(self) -> float:
+        """1 - c with full relative accuracy (never computed as 1 - c).
+
+        Raises:
+            InvalidArgumentError: a load-path state (no single c).
+        """
+        return float(get("double", lib.orthoslip_solution_slip_width, self._handle))
+
+    @property
+    def stick_zone(self) -> tuple[float, float]:
+        """The stick set (c1, c2): (-c, c), or a load-path state's own (NaN when nothing
+        sticks); its ends' error estimate is :attr:`error_estimate`."""
+        out = ffi.new("double[2]")
+        check(lib.orthoslip_solution_stick_zone(self._handle, out, out + 1))
+        return out[0], out[1]
 
     def _evaluate(self, function: Any, inputs: list[npt.ArrayLike], outputs: int) -> list[Any]:
         """Calls ``function(handle, in_0, ..., n, out_0, ...)`` of the C ABI over the inputs

@@ -18,7 +18,7 @@ import numpy.typing as npt
 from ._ffi import check, ffi, get, lib, new_handle
 
 if TYPE_CHECKING:
-    from ._api import Contact
+    from ._api import Contact, Solution
 
 
 class CycleMethod(enum.IntEnum):
@@ -161,6 +161,17 @@ class History:
     def traction_error_estimate(self) -> float:
         """Estimate of int (|dp| + |dq|) dx of the current tractions (units of P)."""
         return float(get("double", lib.orthoslip_history_traction_error_estimate, self._handle))
+
+    def solution(self) -> Solution:
+        """The current state as a :class:`Solution` (a copy: later loads do not change it):
+        its tractions on [-1, 1] without symmetry, the stresses of their field, the stick
+        set ``stick_zone`` with its error estimate ``error_estimate``, and
+        ``traction_error_estimate``. ``c``, ``slip_width``, ``edge_intensity()`` and
+        ``slip()`` raise :class:`InvalidArgumentError` (no single value without symmetry)."""
+        from ._api import Solution
+
+        return Solution(new_handle("orthoslip_solution", lib.orthoslip_solution_free,
+                                   lib.orthoslip_history_solution, self._handle))
 
 
 class Cycles:

@@ -118,3 +118,44 @@ def test_bad_input_is_refused() -> None:
     cy = k.solve_cycles(0.1, max_cycles=1, panels=8, steps=2)
     with pytest.raises(IndexError):
         cy.slip_amplitude(1, 0.0)
+
+
+def test_history_solution() -> None:
+    """A load-path state as a Solution: the uncoupled closed form q = (Q/P) / (pi
+    sqrt(1 - x^2)) within the grid's accuracy, the surface conditions syy = -p, sxy = q, the
+    mirror image under Q -> -Q, the history's stick set and estimates, and the getters
+    without meaning for an asymmetric state refused."""
+    k = Contact(Material.effective(1.0, 1.0 - 1e-6, 1.0, 1.0), mu=0.3)
+    h = k.history(panels=40, steps=3)
+    h.load(0.25)
+    s = h.solution()
+    x = np.array([-0.8, -0.3, 0.1, 0.6])
+    p, q = s.tractions(x)
+    p0 = 1.0 / (math.pi * np.sqrt(1.0 - x * x))
+    np.testing.assert_allclose(p, p0, atol=2.0 / 40)
+    np.testing.assert_allclose(q, 0.25 * p0, atol=0.5 / 40)
+    assert s.stick_zone == h.stick_zone[:2] and s.error_estimate == h.stick_zone[2]
+    assert s.traction_error_estimate == h.traction_error_estimate
+    xs = np.linspace(-0.97, 0.97, 23)
+    ps, qs = s.tractions(xs)
+    _, syy, sxy = s.stresses(xs, 0.0)
+    np.testing.assert_allclose(syy, -ps, rtol=0, atol=1e-12)
+    np.testing.assert_allclose(sxy, qs, rtol=0, atol=1e-12)
+    k2 = Contact(Material.plane_stress(181e9, 10.3e9, 7.17e9, 0.28), mu=0.3)
+    up, down = k2.history(panels=24, steps=3), k2.history(panels=24, steps=3)
+    up.load(0.15)
+    down.load(-0.15)
+    a, b = up.solution(), down.solution()
+    pa, qa = a.tractions(xs)
+    pb, qb = b.tractions(-xs)
+    np.testing.assert_allclose(pa, pb, rtol=0, atol=1e-10)
+    np.testing.assert_allclose(qa, -qb, rtol=0, atol=1e-10)
+    sa = np.array(a.stresses(xs, -0.2))
+    sb = np.array(b.stresses(-xs, -0.2))
+    np.testing.assert_allclose(sa, sb * np.array([[1.0], [1.0], [-1.0]]), rtol=0, atol=1e-10)
+    up.load(0.0)  # the solution is a copy of the state it was made from
+    np.testing.assert_array_equal(a.tractions(xs)[1], qa)
+    for refused in (lambda: a.c, lambda: a.slip_width, a.edge_intensity,
+                    lambda: a.slip(0.5)):
+        with pytest.raises(InvalidArgumentError, match="symmetric"):
+            refused()

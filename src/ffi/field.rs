@@ -29,6 +29,8 @@ unsafe fn check_finite(v: *const f64, n: usize, name: &str) -> Result<(), Failur
 /// those of its own tractions (Lekhnistskii's potentials of the half-plane). Near the
 /// surface at the punch edge, sxx(x, 0) ~ -k [delta^2 + (1 - nu) mu^2] (1 - |x|)^(-g) with the
 /// (k, g) of orthoslip_solution_edge_intensity (GOODMAN: -k delta^2 (1 - |x|)^(-1/2)).
+/// A load-path state (`orthoslip_history_solution`): the field of its tractions without
+/// symmetry (at x = +-1 on the surface sxy is infinite of the sign of q next to that edge).
 /// `x` or `y` may alias an output (in-place evaluation).
 ///
 /// Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER (any pointer NULL, also when n = 0) or
@@ -83,7 +85,9 @@ pub unsafe extern "C" fn orthoslip_solution_stresses(
 /// |x| -> 1, k dimensionless per P/a; on a slip edge q ~ mu p sgn x. g = 1/2 - arctan(bp mu)/pi
 /// (GOODMAN, whose p = 1/(pi sqrt(1 - x^2)) ignores the coupling: g = 1/2, k = 1/(pi sqrt 2)).
 ///
-/// Returns ORTHOSLIP_OK or ORTHOSLIP_ERROR_NULL_POINTER (nothing written).
+/// Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER or ORTHOSLIP_ERROR_INVALID_ARGUMENT
+/// (a load-path state from `orthoslip_history_solution`: its two edges have different
+/// singularities, which its grid does not resolve); nothing written on failure.
 ///
 /// # Safety
 /// `s` must be NULL or a live solution; `k` and `g` NULL or valid for one write each.
@@ -97,6 +101,7 @@ pub unsafe extern "C" fn orthoslip_solution_edge_intensity(
         let sol = deref(s, "s")?;
         deref(k.cast_const(), "k")?;
         deref(g.cast_const(), "g")?;
+        sol.inner.require_symmetric("the edge intensity")?;
         let (kv, gv) = sol.inner.edge_intensity();
         write_all([(k, "k"), (g, "g")], [kv, gv])
     })
@@ -110,8 +115,9 @@ pub unsafe extern "C" fn orthoslip_solution_edge_intensity(
 /// `x` may alias `slip` (in-place evaluation).
 ///
 /// Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER (any pointer NULL, also when n = 0) or
-/// ORTHOSLIP_ERROR_INVALID_ARGUMENT (some x[i] NaN or infinite); on failure nothing is
-/// written.
+/// ORTHOSLIP_ERROR_INVALID_ARGUMENT (some x[i] NaN or infinite, or a load-path state from
+/// `orthoslip_history_solution`, whose slip depends on its path and not on its tractions
+/// alone); on failure nothing is written.
 ///
 /// # Safety
 /// `s` must be NULL or a live solution; `x` NULL or valid for n reads; `slip` NULL or valid
@@ -127,6 +133,7 @@ pub unsafe extern "C" fn orthoslip_solution_slip(
         let sol = deref(s, "s")?;
         deref(x, "x")?;
         deref(slip.cast_const(), "slip")?;
+        sol.inner.require_symmetric("the slip function")?;
         check_finite(x, n, "x")?;
         for i in 0..n {
             *slip.add(i) = sol.inner.slip(*x.add(i))?;

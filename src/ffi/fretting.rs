@@ -309,7 +309,8 @@ pub unsafe extern "C" fn orthoslip_cycle_options_set_repeat_tolerance(
     }
 }
 
-/// The stick set [c1, c2] of a normal-load solution: c1 = -c, c2 = c.
+/// The stick set [c1, c2] of a normal-load solution: c1 = -c, c2 = c; of a load-path state
+/// (`orthoslip_history_solution`): its own (as `orthoslip_history_stick_zone`).
 ///
 /// Returns ORTHOSLIP_OK or ORTHOSLIP_ERROR_NULL_POINTER (nothing written).
 ///
@@ -322,8 +323,8 @@ pub unsafe extern "C" fn orthoslip_solution_stick_zone(
     c2: *mut f64,
 ) -> orthoslip_status {
     run("orthoslip_solution_stick_zone", || unsafe {
-        let c = deref(s, "s")?.inner.c();
-        write_all([(c1, "c1"), (c2, "c2")], [-c, c])
+        let (a, b) = deref(s, "s")?.inner.stick_set();
+        write_all([(c1, "c1"), (c2, "c2")], [a, b])
     })
 }
 
@@ -1089,4 +1090,42 @@ pub unsafe extern "C" fn orthoslip_cycles_loop_error(
             [c.loop_error, c.loop_work_error],
         )
     })
+}
+
+/// The current state as a solution: tractions, stresses, slip and estimates through the
+/// existing getters (`orthoslip_solution_*`; method ORTHOSLIP_METHOD_LCP). The state is
+/// copied: `h` may be loaded further or freed, the solution keeps this state.
+/// - `orthoslip_solution_tractions`: p and q on [-1, 1] without symmetry, the grid's panel
+///   values presented as the normal-load LCP solution presents its own (regular parts
+///   p / w, q / w linear between the midpoints, w = (1 - |x|)^(-g) with the normal-load edge
+///   exponent g); at Q = 0 they are the normal-load LCP solution's on the same grid.
+/// - `orthoslip_solution_stresses`: the field of these tractions (no symmetry assumed).
+/// - `orthoslip_solution_stick_zone`: the stick set [c1, c2] (NaN when nothing sticks);
+///   `orthoslip_solution_error_estimate`: its ends' error estimate;
+///   `orthoslip_solution_traction_error_estimate`: the history's traction error estimate.
+/// - Refused with ORTHOSLIP_ERROR_INVALID_ARGUMENT (no single value describes an asymmetric
+///   state): `orthoslip_solution_stick_half_width`, `orthoslip_solution_slip_width`,
+///   `orthoslip_solution_edge_intensity` (the two edges differ) and
+///   `orthoslip_solution_slip` (a state's slip depends on its load path, not on its
+///   tractions alone; the history's slip increments are in `orthoslip_history_tractions`'
+///   zones).
+///
+/// On success `*out` owns a new handle, to be released with `orthoslip_solution_free`.
+/// Returns ORTHOSLIP_OK or ORTHOSLIP_ERROR_NULL_POINTER; on failure `*out` is set to NULL.
+///
+/// # Safety
+/// `h` must be NULL or a live history; `out` NULL or valid for writing one pointer.
+#[unsafe(no_mangle)]
+pub unsafe extern "C" fn orthoslip_history_solution(
+    h: *const orthoslip_history,
+    out: *mut *mut orthoslip_solution,
+) -> orthoslip_status {
+    unsafe {
+        new_handle("orthoslip_history_solution", out, || {
+            let h = deref(h, "h")?;
+            Ok(orthoslip_solution {
+                inner: h.inner.solution(),
+            })
+        })
+    }
 }

@@ -21,7 +21,9 @@ pub unsafe extern "C" fn orthoslip_solution_free(s: *mut orthoslip_solution) {
 /// Writes the stick half-width c (0 <= c < 1, units of the punch half-width a): the solid
 /// sticks to the punch on |x| < c and slips on c < |x| < 1.
 ///
-/// Returns ORTHOSLIP_OK or ORTHOSLIP_ERROR_NULL_POINTER (nothing written).
+/// Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER or ORTHOSLIP_ERROR_INVALID_ARGUMENT
+/// (a load-path state from `orthoslip_history_solution`: no single c, its stick set is
+/// `orthoslip_solution_stick_zone`'s [c1, c2]); nothing written on failure.
 ///
 /// # Safety
 /// `s` must be NULL or a live solution; `c` NULL or valid for one write.
@@ -31,15 +33,18 @@ pub unsafe extern "C" fn orthoslip_solution_stick_half_width(
     c: *mut f64,
 ) -> orthoslip_status {
     run("orthoslip_solution_stick_half_width", || unsafe {
-        let v = deref(s, "s")?.inner.c();
-        write_all([(c, "c")], [v])
+        let sol = &deref(s, "s")?.inner;
+        sol.require_symmetric("the stick half-width c")?;
+        write_all([(c, "c")], [sol.c()])
     })
 }
 
 /// Writes the slip-zone width 1 - c (units of a) with full relative accuracy, also when c is
 /// within 1e-9 or less of 1 (it is never computed as 1 - c in floating point).
 ///
-/// Returns ORTHOSLIP_OK or ORTHOSLIP_ERROR_NULL_POINTER (nothing written).
+/// Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER or ORTHOSLIP_ERROR_INVALID_ARGUMENT
+/// (a load-path state from `orthoslip_history_solution`: no single c); nothing written on
+/// failure.
 ///
 /// # Safety
 /// `s` must be NULL or a live solution; `one_minus_c` NULL or valid for one write.
@@ -49,8 +54,9 @@ pub unsafe extern "C" fn orthoslip_solution_slip_width(
     one_minus_c: *mut f64,
 ) -> orthoslip_status {
     run("orthoslip_solution_slip_width", || unsafe {
-        let v = deref(s, "s")?.inner.one_minus_c();
-        write_all([(one_minus_c, "one_minus_c")], [v])
+        let sol = &deref(s, "s")?.inner;
+        sol.require_symmetric("the slip-zone width 1 - c")?;
+        write_all([(one_minus_c, "one_minus_c")], [sol.one_minus_c()])
     })
 }
 
@@ -59,6 +65,8 @@ pub unsafe extern "C" fn orthoslip_solution_slip_width(
 /// sigma_xy(x, 0) = (P/a) q(x/a) (paper eq. (6)); int p dx = 1, q is odd and positive for
 /// x > c. For |x| > 1, p = q = 0; at |x| = 1 the punch-edge singularity
 /// p ~ (1 - |x|)^(-g) is reported as p = +INFINITY, q = +-INFINITY (0 when mu = 0).
+/// A load-path state (`orthoslip_history_solution`): p and q without symmetry,
+/// int q dx = Q/P, q at x = +-1 infinite of the sign of q next to that edge.
 /// `x` may alias `p` or `q` (in-place evaluation).
 ///
 /// Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER (any pointer NULL, also when n = 0) or
@@ -120,7 +128,9 @@ pub unsafe extern "C" fn orthoslip_solution_method(
 /// measured by COUPLED at the surrounding points of a table computed offline, plus 1e-10;
 /// validated at random points off the table, not certified), +INFINITY where the table gives
 /// no bound (outside its range of b* = 0.005 .. 0.99, or where the exact solver failed
-/// nearby). Never NaN.
+/// nearby). Never NaN. A load-path state (`orthoslip_history_solution`): the estimate of
+/// the error of its stick set's ends c1, c2 (the larger; +INFINITY if the half-panel grid
+/// failed).
 ///
 /// Returns ORTHOSLIP_OK or ORTHOSLIP_ERROR_NULL_POINTER (nothing written).
 ///
@@ -145,7 +155,8 @@ pub unsafe extern "C" fn orthoslip_solution_error_estimate(
 /// there, this one O(mu p(c) dc).
 /// COUPLED: from its last two orders; LCP: from its last two grids; GOODMAN and SPENCE: an
 /// empirical model-error bound (a table measured offline against COUPLED, validated off its
-/// grid, not certified), +INFINITY where the table gives no bound. Never NaN.
+/// grid, not certified), +INFINITY where the table gives no bound. Never NaN. A load-path
+/// state (`orthoslip_history_solution`): `orthoslip_history_traction_error_estimate`'s.
 ///
 /// Returns ORTHOSLIP_OK or ORTHOSLIP_ERROR_NULL_POINTER (nothing written).
 ///

@@ -63,12 +63,20 @@ impl Panel {
 /// The traction expansion of a solution (see the module documentation).
 #[derive(Clone, Debug, PartialEq)]
 pub(crate) struct Expansion {
-    /// Panels tiling [0, 1], left to right.
+    /// Panels tiling [0, 1], left to right (p even, q odd: the mirror stands for [-1, 0]);
+    /// or tiling [-1, 1], left to right, for tractions without symmetry
+    /// ([`Expansion::whole_line`]).
     pub(crate) panels: Vec<Panel>,
 }
 
 impl Expansion {
-    /// (p, q) at 0 <= x < 1.
+    /// Whether the panels tile the whole contact [-1, 1] (the first starts left of 0): no
+    /// symmetry is assumed and nothing is mirrored (a load-path state, issue 27).
+    pub(crate) fn whole_line(&self) -> bool {
+        self.panels.first().is_some_and(|p| p.a < 0.0)
+    }
+
+    /// (p, q) at 0 <= x < 1 (-1 <= x < 1 for a whole-line expansion).
     pub(crate) fn tractions(&self, x: f64) -> (f64, f64) {
         let i = self.panels.iter().position(|p| x < p.b);
         self.panels[i.unwrap_or(self.panels.len() - 1)].tractions(x)

@@ -4,6 +4,11 @@
 //! mirror [-b, -a]: G_p(z) = sum g_p(z) - g_p(-z), G_q(z) = sum g_q(z) + g_q(-z) over the
 //! panels' own transforms g.
 //!
+//! A whole-line expansion ([`Expansion::whole_line`]: panels tiling [-1, 1], no symmetry,
+//! the state of a load path) is summed as it is: each panel's own transform, near or far as
+//! below, and for |z| >= [`FAR_RADIUS`] the moment series with every moment M_k of p and q.
+//! Its slip quantities (`p_from`, `log_potential_q`) assume the mirror and are not used.
+//!
 //! Each panel's transform is taken, by the Bernstein parameter rho of z with respect to the
 //! panel (rho + 1/rho = (|z - a| + |z - b|) / h):
 //! - near (rho < [`NEAR_RHO`]): closed form and recurrence ([`near_transforms`]);
@@ -322,9 +327,12 @@ impl Point {
 #[derive(Clone, Debug)]
 pub(crate) struct Kernel {
     panels: Vec<KernelPanel>,
-    /// M_(2j) of p and M_(2j+1) of q, j < MOMENTS / 2.
+    /// M_(2j) of p and M_(2j+1) of q, j < MOMENTS / 2 (mirrored expansions).
     even_p: Vec<f64>,
     odd_q: Vec<f64>,
+    /// A whole-line expansion ([`Expansion::whole_line`]): every moment M_k of p and of q,
+    /// k < MOMENTS; its panels are summed as they are, without mirrors.
+    whole: Option<(Vec<f64>, Vec<f64>)>,
 }
 
 /// Gauss rules shared between the panels while building (keyed by weight and size).
@@ -641,6 +649,32 @@ fn dot(w: &[f64], a: &[f64], b: Option<&[f64]>) -> f64 {
     acc.iter().sum::<f64>() + rest.sum::<f64>()
 }
 
+/// Every moment M_k = int f t^k dt, k < MOMENTS, of p and of q of a whole-line expansion
+/// (no mirror), from each family's rule exact for degree n + MOMENTS.
+fn whole_moments(panels: &[KernelPanel], e: &Expansion, rules: &mut Rules) -> (Vec<f64>, Vec<f64>) {
+    let (mut mp, mut mq) = (vec![0.0; MOMENTS], vec![0.0; MOMENTS]);
+    for (panel, source) in panels.iter().zip(&e.panels) {
+        for f in &source.families {
+            let n = f.p.len().max(f.q.len());
+            let (nodes, weights) = rule(rules, f.weight, (n + MOMENTS) / 2 + 1);
+            let mut leg = vec![0.0; n];
+            for (&t, &w) in nodes.iter().zip(weights) {
+                let x = panel.m + panel.h * t;
+                legendre(t, &mut leg);
+                let val = |c: &[f64]| c.iter().zip(&leg).map(|(c, l)| c * l).sum::<f64>();
+                let (vp, vq) = (panel.h * w * val(&f.p), panel.h * w * val(&f.q));
+                let mut power = 1.0;
+                for k in 0..MOMENTS {
+                    mp[k] += vp * power;
+                    mq[k] += vq * power;
+                    power *= x;
+                }
+            }
+        }
+    }
+    (mp, mq)
+}
+
 impl Kernel {
     /// Prepares an expansion's panels.
     pub(crate) fn new(e: &Expansion) -> Self {
@@ -677,11 +711,63 @@ impl Kernel {
                 }
             }
         }
+        let whole = e
+            .whole_line()
+            .then(|| whole_moments(&panels, e, &mut rules));
         Kernel {
             panels,
             even_p,
             odd_q,
+            whole,
         }
+    }
+
+    /// The moment series of a whole-line expansion at |z| >= FAR_RADIUS (times pi):
+    /// pi G_f(z) = sum_k M_k / z^(k+1), pi G_f'(z) = -sum_k (k + 1) M_k / z^(k+2).
+    fn far_field_whole(&self, z: C64, deriv: bool, mp: &[f64], mq: &[f64]) -> Transforms {
+        let terms = ((32.0 / z.norm_sqr().log10()).ceil() as usize + 2).min(MOMENTS);
+        let inv = far_inverse(z);
+        let zero = C64::new(0.0, 0.0);
+        let (mut sp, mut sq, mut dp, mut dq) = (zero, zero, zero, zero);
+        for k in (0..terms).rev() {
+            sp = sp * inv + mp[k];
+            sq = sq * inv + mq[k];
+            if deriv {
+                dp = dp * inv + mp[k] * (k + 1) as f64;
+                dq = dq * inv + mq[k] * (k + 1) as f64;
+            }
+        }
+        let inv2 = inv * inv;
+        Transforms {
+            p: sp * inv,
+            q: sq * inv,
+            dp: -dp * inv2,
+            dq: -dq * inv2,
+        }
+    }
+
+    /// Sums over the panels of a whole-line expansion (times pi), each panel's own transform
+    /// only: its far rule of the point's band, or its closed form when near.
+    fn whole_sums(&self, point: Point, deriv: bool) -> Transforms {
+        let zero = C64::new(0.0, 0.0);
+        let mut scratch = None;
+        let mut t = Transforms::zero();
+        let z = point.z();
+        for panel in &self.panels {
+            let own = match panel.band(z) {
+                Some(b) => panel.far_sums(z, b, deriv),
+                None => {
+                    let scratch =
+                        scratch.get_or_insert([[zero; MAX_DEGREE + 1], [zero; MAX_DEGREE + 1]]);
+                    panel.near_sums(point, deriv, scratch)
+                }
+            };
+            t.p += own.p;
+            t.q += own.q;
+            t.dp += own.dp;
+            t.dq += own.dq;
+        }
+        t
     }
 
     /// The moment series at |z| >= FAR_RADIUS (times pi), with as many terms as |z| needs.
@@ -741,6 +827,22 @@ impl Kernel {
         points: [Point; N],
         deriv: bool,
     ) -> [Transforms; N] {
+        if let Some((mp, mq)) = &self.whole {
+            let s = 1.0 / PI;
+            return points.map(|point| {
+                let z = point.z();
+                let mut t = if z.norm_sqr() >= FAR_RADIUS * FAR_RADIUS {
+                    self.far_field_whole(z, deriv, mp, mq)
+                } else {
+                    self.whole_sums(point, deriv)
+                };
+                t.p *= s;
+                t.q *= s;
+                t.dp *= s;
+                t.dq *= s;
+                t
+            });
+        }
         // G_p odd, G_q even (so G_p' even, G_q' odd): each point is taken with Re z >= 0
         let left = points.map(|p| p.z().re < 0.0);
         let right: [Point; N] =

@@ -121,7 +121,11 @@ impl Field {
             edge,
             slip: slip::Slip::default(),
         };
-        field.slip = slip::Slip::new(&field.kernel, k, c, |t| field.slope_terms(t));
+        if !field.expansion.whole_line() {
+            // (a whole-line state's slip depends on its load path, not on its tractions
+            // alone: not built, and not offered by its solution)
+            field.slip = slip::Slip::new(&field.kernel, k, c, |t| field.slope_terms(t));
+        }
         field
     }
 
@@ -147,11 +151,21 @@ impl Field {
             // and -sxx are infinite (q = 0 without friction); at y = -1e-300 the transforms
             // of the edge singularity, ~1e150, times delta^2 = 1e300 gave sxx = -inf with a
             // finite syy (hostile draw 761)
-            let (_, q) = self.expansion.tractions(0.5);
-            let sxy = if q == 0.0 {
-                0.0
+            let sxy = if self.expansion.whole_line() {
+                // no symmetry: the sign of q in the end panel at this edge
+                let (_, q) = self.expansion.tractions(0.999 * x);
+                if q == 0.0 {
+                    0.0
+                } else {
+                    f64::INFINITY.copysign(q)
+                }
             } else {
-                f64::INFINITY.copysign(x)
+                let (_, q) = self.expansion.tractions(0.5);
+                if q == 0.0 {
+                    0.0
+                } else {
+                    f64::INFINITY.copysign(x)
+                }
             };
             return [f64::NEG_INFINITY, f64::NEG_INFINITY, sxy];
         }

@@ -282,3 +282,138 @@ fn odd_panel_counts_are_served() {
     assert_eq!(panel_index(18, 0.0), 9);
     assert_eq!(panel_index(8, 0.999), 7);
 }
+
+/// The state at Q = 0 as a solution is the normal-load LCP solution of the same grid, its
+/// mirror image made explicit: tractions and stresses (the whole-line field, no mirroring,
+/// against the symmetric field of `lcp::solve`'s expansion) agree to the LCP's
+/// complementarity tolerance; its stick set is [-c, c].
+#[test]
+fn normal_load_state_as_a_solution_is_the_lcp_solution() {
+    use crate::field::{Expand, Field};
+    let c = ply_contact(0.3);
+    let n = 100;
+    let opt = CycleOptions {
+        panels: n,
+        ..CycleOptions::default()
+    };
+    let path = LoadPath::new(&c, &opt).unwrap();
+    let s = path.solution();
+    assert!(!s.is_symmetric() && s.method() == Method::Lcp);
+    let lcp = crate::lcp::solve(&c.coupling(), n).unwrap();
+    let e = lcp.expansion();
+    let reference = Field::new(
+        e.clone(),
+        lcp.edge_intensity(&e),
+        &c.material().constants(),
+        lcp.edge().c,
+    );
+    let (c1, c2) = s.stick_set();
+    assert!((c2 - lcp.edge().c).abs() < 1e-12 && (c1 + c2).abs() < 1e-12);
+    let (mut dt, mut ds) = (0.0f64, 0.0f64);
+    for i in 0..=400 {
+        let x = -1.2 + 2.4 * (i as f64 + 0.37) / 401.0;
+        let (p, q) = s.tractions(x);
+        let (pr, qr) = lcp.tractions(x);
+        dt = dt.max((p - pr).abs()).max((q - qr).abs());
+        for y in [0.0, -0.003, -0.05, -0.4, -2.0] {
+            let a = s.stresses(x, y).unwrap();
+            let b = reference.stresses(x, y);
+            for k in 0..3 {
+                ds = ds.max((a[k] - b[k]).abs());
+            }
+        }
+    }
+    println!("Q = 0 against the LCP solution: tractions {dt:.2e}, stresses {ds:.2e}");
+    assert!(dt < 1e-10 && ds < 1e-10, "{dt:e} {ds:e}");
+    // the edges themselves, as the LCP solution reports them
+    assert_eq!(s.tractions(1.0), lcp.tractions(1.0));
+    assert_eq!(s.tractions(-1.0), lcp.tractions(-1.0));
+    assert_eq!(
+        s.stresses(-1.0, 0.0).unwrap(),
+        reference.stresses(-1.0, 0.0)
+    );
+}
+
+/// A loaded state as a solution: equilibrium from its tractions (int p = 1, int q = Q/P
+/// within its traction error estimate), the surface conditions syy = -p, sxy = q between
+/// the midpoints, the mirror image Q -> -Q, and the refusals of what has no meaning without
+/// symmetry.
+#[test]
+fn loaded_state_as_a_solution() {
+    let c = ply_contact(0.3);
+    let opt = CycleOptions {
+        panels: 40,
+        steps: 4,
+        ..CycleOptions::default()
+    };
+    let (mut up, mut down) = (
+        LoadPath::new(&c, &opt).unwrap(),
+        LoadPath::new(&c, &opt).unwrap(),
+    );
+    up.load(0.2).unwrap();
+    down.load(-0.2).unwrap();
+    let (s, m) = (up.solution(), down.solution());
+    assert_eq!(s.stick_set(), up.stick_zone().0);
+    assert_eq!(s.error_estimate(), up.stick_zone().1);
+    assert_eq!(s.traction_error_estimate(), up.traction_error());
+    // int p, int q by Gauss-Legendre between the midpoints (the tractions are smooth there),
+    // and on the end panels in u = (1 - |x|)^(1 - g), where (1 - |x|)^(-g) dx = du / (1 - g)
+    let g = c.coupling().edge_exponent();
+    let nodes = up.nodes();
+    let (gx, gw) = crate::numerics::quadrature::gauss_legendre(12);
+    let (mut ip, mut iq) = (0.0, 0.0);
+    let mut breaks = nodes.clone();
+    breaks.push(0.0);
+    breaks.sort_by(f64::total_cmp);
+    for w in breaks.windows(2) {
+        let (mid, r) = (0.5 * (w[0] + w[1]), 0.5 * (w[1] - w[0]));
+        for (t, wt) in gx.iter().zip(&gw) {
+            let (p, q) = s.tractions(mid + r * t);
+            ip += r * wt * p;
+            iq += r * wt * q;
+        }
+    }
+    for side in [-1.0, 1.0] {
+        let d = 1.0 - nodes[nodes.len() - 1];
+        let umax = d.powf(1.0 - g);
+        for (t, wt) in gx.iter().zip(&gw) {
+            let u = 0.5 * umax * (1.0 + t);
+            let dist = u.powf(1.0 / (1.0 - g));
+            let (p, q) = s.tractions(side * (1.0 - dist));
+            let jac = 0.5 * umax * dist.powf(g) / (1.0 - g);
+            ip += wt * jac * p;
+            iq += wt * jac * q;
+        }
+    }
+    let e = s.traction_error_estimate();
+    println!(
+        "Q/P = 0.2: int p - 1 = {:.2e}, int q - Q/P = {:.2e}, traction estimate {e:.2e}",
+        ip - 1.0,
+        iq - 0.2
+    );
+    assert!((ip - 1.0).abs() + (iq - 0.2).abs() <= e);
+    let (mut surface, mut mirror) = (0.0f64, 0.0f64);
+    let h = up.h();
+    for &x0 in &nodes {
+        for x in [x0 - 0.3 * h, x0 + 0.25 * h] {
+            let (p, q) = s.tractions(x);
+            let [_, syy, sxy] = s.stresses(x, 0.0).unwrap();
+            surface = surface.max((syy + p).abs()).max((sxy - q).abs());
+            let (pm, qm) = m.tractions(-x);
+            mirror = mirror.max((p - pm).abs()).max((q + qm).abs());
+            for y in [0.0, -0.02, -0.5] {
+                let a = s.stresses(x, y).unwrap();
+                let b = m.stresses(-x, y).unwrap();
+                mirror = mirror
+                    .max((a[0] - b[0]).abs())
+                    .max((a[1] - b[1]).abs())
+                    .max((a[2] + b[2]).abs());
+            }
+        }
+    }
+    println!("surface conditions {surface:.2e}, mirror Q -> -Q {mirror:.2e}");
+    assert!(surface < 1e-10 && mirror < 1e-9, "{surface:e} {mirror:e}");
+    assert!(s.c().is_nan() && s.edge_intensity().0.is_nan());
+    assert!(matches!(s.slip(0.5), Err(Error::InvalidArgument(_))));
+    assert!(s.require_symmetric("c").is_err());
+}
