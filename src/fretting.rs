@@ -27,7 +27,7 @@ use std::f64::consts::PI;
 
 use crate::contact::{Contact, Method, Solution};
 use crate::error::{Error, Result};
-use crate::field::{Expand, Expansion, Family, Panel, fit};
+use crate::field::{Expand, Expansion, Family, grid_expansion};
 use crate::lcp::history::{self, History, State};
 use crate::material::Material;
 use crate::numerics::cauchy::Weight;
@@ -966,39 +966,27 @@ impl Expand for StateProfile {
         breaks.extend_from_slice(&self.nodes[self.n..]);
         breaks.push(1.0);
         let g = self.coupling.edge_exponent();
-        let panels = breaks
-            .windows(2)
-            .map(|w| {
-                let (a, b) = (w[0], w[1]);
-                let (mid, r) = (0.5 * (a + b), 0.5 * (b - a));
+        grid_expansion(
+            &breaks,
+            |x| self.tractions(x),
+            |a, b| {
                 let end = |i: usize, weight: Weight| {
-                    let scale = r.powf(-g);
+                    let scale = (0.5 * (b - a)).powf(-g);
                     Family {
                         weight,
                         p: vec![scale * self.rp[i]],
                         q: vec![scale * self.rq[i]],
                     }
                 };
-                let family = if a == -1.0 {
-                    end(0, Weight::Left(-g))
+                if a == -1.0 {
+                    Some(end(0, Weight::Left(-g)))
                 } else if b == 1.0 {
-                    end(m - 1, Weight::Right(-g))
+                    Some(end(m - 1, Weight::Right(-g)))
                 } else {
-                    let at = |t: f64| self.tractions(mid + r * t);
-                    Family {
-                        weight: Weight::One,
-                        p: fit(|t| at(t).0),
-                        q: fit(|t| at(t).1),
-                    }
-                };
-                Panel {
-                    a,
-                    b,
-                    families: vec![family],
+                    None
                 }
-            })
-            .collect();
-        Expansion { panels }
+            },
+        )
     }
 
     /// The two edges differ: none.

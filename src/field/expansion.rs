@@ -237,6 +237,37 @@ fn legendre_coefficients(f: impl Fn(f64) -> f64, n: usize) -> Vec<f64> {
     coef
 }
 
+/// The expansion of a grid method on consecutive `breaks`: one panel per interval, given by
+/// `end(a, b)` where that returns a family (the end panels, which carry the edge weight),
+/// else its tractions `at(x)` fitted in Legendre series with no weight.
+pub(crate) fn grid_expansion(
+    breaks: &[f64],
+    at: impl Fn(f64) -> (f64, f64),
+    end: impl Fn(f64, f64) -> Option<Family>,
+) -> Expansion {
+    let panels = breaks
+        .windows(2)
+        .map(|w| {
+            let (a, b) = (w[0], w[1]);
+            let family = end(a, b).unwrap_or_else(|| {
+                let (m, r) = (0.5 * (a + b), 0.5 * (b - a));
+                let at = |t: f64| at(m + r * t);
+                Family {
+                    weight: Weight::One,
+                    p: fit(|t| at(t).0),
+                    q: fit(|t| at(t).1),
+                }
+            });
+            Panel {
+                a,
+                b,
+                families: vec![family],
+            }
+        })
+        .collect();
+    Expansion { panels }
+}
+
 /// A panel [a, b] of one family with end weight `weight`: p / w and q / w fitted from
 /// `tractions(1 - t, 1 + t)`, the tractions at local t given its distances to the panel's
 /// ends (so that a closed form can keep them to full relative accuracy next to an end).

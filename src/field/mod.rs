@@ -42,7 +42,8 @@ mod kernel;
 mod slip;
 
 pub(crate) use expansion::{
-    Expand, Expansion, Exponents, Family, Panel, fit, fitted_panel, graded, graded_plain, sample,
+    Expand, Expansion, Exponents, Family, Panel, fit, fitted_panel, graded, graded_plain,
+    grid_expansion, sample,
 };
 
 use crate::material::Effective;

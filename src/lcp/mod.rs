@@ -26,7 +26,7 @@ mod smoothing_newton;
 mod stick_edge;
 
 use crate::error::{Error, Result};
-use crate::field::{Expand, Expansion, Family, Panel, fit};
+use crate::field::{Expand, Expansion, Family, grid_expansion};
 use crate::numerics::cauchy::Weight;
 use crate::problem::{Coupling, Profile, StickEdge, traction_distance, validate_tolerance};
 use discretisation::Grid;
@@ -327,35 +327,21 @@ impl Expand for LcpSolution {
         breaks.extend((0..n).map(|j| self.grid.mid(j)));
         breaks.push(1.0);
         let g = self.coupling.edge_exponent();
-        let panels = breaks
-            .windows(2)
-            .map(|w| {
-                let (a, b) = (w[0], w[1]);
-                let (m, r) = (0.5 * (a + b), 0.5 * (b - a));
-                let family = if b == 1.0 {
+        grid_expansion(
+            &breaks,
+            |x| self.half_line_tractions(x),
+            |a, b| {
+                (b == 1.0).then(|| {
                     let j = n - 1;
-                    let scale = r.powf(-g) / self.weight_average(j);
+                    let scale = (0.5 * (b - a)).powf(-g) / self.weight_average(j);
                     Family {
                         weight: Weight::Right(-g),
                         p: vec![scale * self.p[j]],
                         q: vec![scale * self.q[j]],
                     }
-                } else {
-                    let at = |t: f64| self.half_line_tractions(m + r * t);
-                    Family {
-                        weight: Weight::One,
-                        p: fit(|t| at(t).0),
-                        q: fit(|t| at(t).1),
-                    }
-                };
-                Panel {
-                    a,
-                    b,
-                    families: vec![family],
-                }
-            })
-            .collect();
-        Expansion { panels }
+                })
+            },
+        )
     }
 }
 
