@@ -162,11 +162,13 @@ pub(crate) fn from_edge(
     if slope == 0.0 || !slope.is_finite() {
         return None;
     }
-    let (mp, mq) = distance(&shifted, &base.fixed);
+    let rules = Rules::new(k.g);
+    let (mp, mq) = distance(&shifted, &base.fixed, &rules);
     let first = First {
         base,
         slope,
         rate: (mp / SLOPE_STEP, mq / SLOPE_STEP),
+        rules,
     };
     let fixed = if bound <= tol {
         at_fixed_edge(k, &first, bound, traction_tol, delta)
@@ -176,12 +178,13 @@ pub(crate) fn from_edge(
     fixed.or_else(|| newton_ladder(k, &first, tol, traction_tol, delta))
 }
 
-/// Level 1 at the starting lc, with sigma's slope and the tractions' move per unit of lc,
-/// (int |dp|, int |dq~|) / dlc.
+/// Level 1 at the starting lc, with sigma's slope, the tractions' move per unit of lc
+/// (int |dp|, int |dq~|) / dlc, and the Gauss rules of [`distance`] for its g.
 struct First {
     base: Level,
     slope: f64,
     rate: (f64, f64),
+    rules: Rules,
 }
 
 /// The tractions at the starting lc, whose c is within `bound` of the exact one: one solve per
@@ -218,7 +221,7 @@ fn at_fixed_edge(
         if offset > uncertainty + SAFETY * noise {
             return None;
         }
-        let (dp, dq) = distance(&cur, &prev);
+        let (dp, dq) = distance(&cur, &prev, &first.rules);
         let parts = (SAFETY * dp + moved.0, SAFETY * dq + moved.1);
         if parts.0 + delta * parts.1 <= traction_tol && cur.residual <= traction_tol {
             match verdict(&cur, k.mu, traction_tol, delta, parts) {
@@ -270,7 +273,7 @@ fn newton_ladder(
         let root = lc + step;
         let distance_c = StickEdge::from_logit(root).distance(StickEdge::from_logit(prev_root));
         let error = SAFETY * (distance_c + c * w * (step.abs() + prev_step.abs()));
-        let (dp, dq) = distance(&cur, &prev);
+        let (dp, dq) = distance(&cur, &prev, &first.rules);
         let parts = (
             SAFETY * (dp + first.rate.0 * step.abs()),
             SAFETY * (dq + first.rate.1 * step.abs()),
@@ -335,24 +338,39 @@ fn verdict(f: &Fixed, mu: f64, traction_tol: f64, delta: f64, parts: (f64, f64))
 /// Gauss points per zone of [`distance`].
 const DISTANCE_POINTS: usize = 48;
 
+/// The Gauss rules of [`distance`] for the edge exponent g, built once per answer.
+pub(crate) struct Rules {
+    legendre: (Vec<f64>, Vec<f64>),
+    jacobi: (Vec<f64>, Vec<f64>),
+}
+
+impl Rules {
+    pub(crate) fn new(g: f64) -> Self {
+        Rules {
+            legendre: gauss_legendre(DISTANCE_POINTS),
+            jacobi: gauss_jacobi(DISTANCE_POINTS, -g, 0.0),
+        }
+    }
+}
+
 /// (int |dp|, int |dq|) over (-1, 1) between two levels' tractions (the norm of
 /// [`crate::problem::traction_distance`]), each zone by a Gauss rule in its own variable: on
 /// the stick zone Gauss-Legendre in tau = x / c, on the slip zone Gauss-Jacobi in s for the
 /// edge weight (1 - s)^-g (the integrand divided by it). Both levels are evaluated at the
 /// same x: their stick edges differ by the levels' error in c.
-fn distance(a: &Fixed, b: &Fixed) -> (f64, f64) {
+fn distance(a: &Fixed, b: &Fixed, rules: &Rules) -> (f64, f64) {
     let (c, w, g) = (a.basis.c, a.basis.w, a.basis.k.g);
     let (mut dp, mut dq) = (0.0, 0.0);
-    let (t, wt) = gauss_legendre(DISTANCE_POINTS);
-    for (&t, &wt) in t.iter().zip(&wt) {
+    let (t, wt) = &rules.legendre;
+    for (&t, &wt) in t.iter().zip(wt) {
         // tau in (0, 1): the half of the stick zone
         let x = 0.5 * c * (1.0 + t);
         let ((pa, qa), (pb, qb)) = (a.at(x), b.at(x));
         dp += 0.5 * c * wt * (pa - pb).abs();
         dq += 0.5 * c * wt * (qa - qb).abs();
     }
-    let (s, ws) = gauss_jacobi(DISTANCE_POINTS, -g, 0.0);
-    for (&s, &ws) in s.iter().zip(&ws) {
+    let (s, ws) = &rules.jacobi;
+    for (&s, &ws) in s.iter().zip(ws) {
         let x = c + 0.5 * w * (1.0 + s);
         let weight = (1.0 - s).powf(-g);
         let ((pa, qa), (pb, qb)) = (a.at(x), b.at(x));
