@@ -67,10 +67,11 @@ impl Sizes {
 /// The ranges [nearest, farthest] of the poles' distances (B4): the stick poles at
 /// x = +-(1 + zeta), zeta from (1 - c) / 10 to c, the slip poles at x = -(c + eta), eta from
 /// c / 10 to 1 - c. The nearest is a tenth of the distance from the zone's end to the
-/// singular point beyond it; the farthest is the zone's own length scale. A pole farther away than that is resolved by the zone's
-/// polynomials already (for the stick zone, tau >= 2 and a convergence factor of 3.7 per
-/// degree) and adds only a near-dependent column, whose large cancelling coefficients are
-/// rounding noise in the tractions ((R2)). Measured in one run of
+/// singular point beyond it; the farthest is the zone's own length scale. A pole farther
+/// away than that is resolved by the zone's polynomials already (for the stick zone,
+/// tau >= 2 and a convergence factor of 3.7 per degree) and adds only a near-dependent
+/// column, whose large cancelling coefficients are rounding noise in the tractions ((R2)).
+/// Measured in one run of
 /// `examples/spectral_timing.rs` (the 8 scenes the spectral solver answers, c to 1e-10,
 /// tractions to 1e-8): with zeta up to 2 and eta up to 1 (the first rule) 79-191 unknowns;
 /// with this rule 66-157, and the answers met the same noise bound. Before the noise bound,
