@@ -231,6 +231,9 @@ pub(crate) struct Hyp2f1 {
     b: f64,
     e: f64,
     near_one: std::sync::OnceLock<NearOne>,
+    /// The terms of the expansion about z = 1 that do not depend on z, in chunks of
+    /// [`CHUNK`] built on first use ([`Hyp2f1::near_one`]).
+    chunks: [std::sync::OnceLock<Chunk>; CHUNKS],
 }
 
 /// The constants of the expansion about z = 1 (DLMF 15.8.4, see [`Hyp2f1::near_one`]).
@@ -243,6 +246,28 @@ struct NearOne {
     slopes: [f64; 3],
 }
 
+/// Terms per chunk of the table of [`Hyp2f1::near_one`].
+const CHUNK: usize = 16;
+
+/// Chunks of the table: 96 terms, more than |w| <= 1/2 needs (2^-96 ~ 1e-29 against the
+/// series tolerance 1e-17; about 60 terms are summed at |w| = 1/2).
+const CHUNKS: usize = 6;
+
+/// One term's z-independent part: r_n, D_n - ln w, and expm1(e (D_n - ln w)).
+#[derive(Clone, Copy, Debug, Default)]
+struct Term {
+    r: f64,
+    d0: f64,
+    am1: f64,
+}
+
+/// [`CHUNK`] terms, and the running (r, the three slopes) after the last of them.
+#[derive(Clone, Copy, Debug)]
+struct Chunk {
+    terms: [Term; CHUNK],
+    next: (f64, [f64; 3]),
+}
+
 impl Hyp2f1 {
     /// 2F1(a, b; a + b + e; .) for a, b > 0 and 0 <= e < 1.
     pub(crate) fn new(a: f64, b: f64, e: f64) -> Self {
@@ -251,6 +276,7 @@ impl Hyp2f1 {
             b,
             e,
             near_one: std::sync::OnceLock::new(),
+            chunks: Default::default(),
         }
     }
 
@@ -311,38 +337,73 @@ impl Hyp2f1 {
         (sum, (1.0 - z) * slope)
     }
 
+    /// Chunk `i` of the z-independent terms of [`Hyp2f1::near_one`], from the running
+    /// values at its start (the constants for chunk 0, else the previous chunk's end).
+    fn chunk(&self, i: usize) -> &Chunk {
+        self.chunks[i].get_or_init(|| {
+            let (mut r, [mut da, mut db, mut dn]) = if i == 0 {
+                (1.0, self.constants().slopes)
+            } else {
+                self.chunk(i - 1).next
+            };
+            let (a, b, e) = (self.a, self.b, self.e);
+            let mut terms = [Term::default(); CHUNK];
+            for (j, t) in terms.iter_mut().enumerate() {
+                let nf = (i * CHUNK + j) as f64;
+                let d0 = da + db - 2.0 * dn;
+                *t = Term {
+                    r,
+                    d0,
+                    am1: (e * d0).exp_m1(),
+                };
+                da += log_slope(a + nf, e);
+                db += log_slope(b + nf, e);
+                dn += log_slope(nf + 1.0 - e, 2.0 * e);
+                r *= (a + nf) * (b + nf) / ((nf + 1.0) * (nf + 1.0 - e));
+            }
+            Chunk {
+                terms,
+                next: (r, [da, db, dn]),
+            }
+        })
+    }
+
     /// The expansion about z = 1 in w = 1 - z (|w| <= 1/2; w < 0 only for e = 0), DLMF 15.8.4
     /// with c = a + b + e summed term by term:
-    ///   F = prefactor sum_n r_n w^n (-D_n) exprel(e D_n),
+    ///   F = prefactor sum_n r_n w^n (-Q_n),  Q_n = (exp(e D_n) - 1) / e,
     ///   r_n = (a)_n (b)_n / (n! (1 - e)_n),
     ///   D_n = [ln Gamma(a+n+e) - ln Gamma(a+n) + ln Gamma(b+n+e) - ln Gamma(b+n)
     ///          - ln Gamma(n+1+e) + ln Gamma(n+1-e)] / e + ln w,
-    /// which at e = 0 is DLMF 15.8.10 (D_n = psi(a+n) + psi(b+n) - 2 psi(n+1) + ln w), so it
-    /// goes over into the logarithmic case without cancellation between the two terms of 15.8.4.
-    /// With Q_n = D_n exprel(e D_n) = (exp(e D_n) - 1) / e and dQ_n/dw = (1 + e Q_n) / w,
+    /// which at e = 0 is DLMF 15.8.10 (Q_n = D_n = psi(a+n) + psi(b+n) - 2 psi(n+1) + ln w),
+    /// so it goes over into the logarithmic case without cancellation between the two terms
+    /// of 15.8.4. With dQ_n/dw = (1 + e Q_n) / w,
     ///   dF/ds = -z w dF/dw = prefactor z sum_n r_n w^n ((n + e) Q_n + 1).
+    /// The parts of D_n and Q_n that do not depend on w are tabulated once ([`Hyp2f1::chunk`]):
+    /// with A_n = expm1(e (D_n - ln w)) and B = expm1(e ln w),
+    /// e Q_n = expm1(e D_n) = A_n + B + A_n B, exact up to rounding of the size
+    /// eps (|A_n| + |B|), so no transcendental function is left in the sum.
     fn near_one(&self, z: f64, w: f64, ln_w: f64) -> (f64, f64) {
-        let (a, b, e) = (self.a, self.b, self.e);
+        let e = self.e;
         debug_assert!(w >= 0.0 || e == 0.0, "z > 1 only in the logarithmic case");
         let k = self.constants();
-        let [mut da, mut db, mut dn] = k.slopes;
-        let (mut r, mut wn, mut sum, mut slope) = (1.0, 1.0, 0.0, 0.0);
-        for n in 0..MAX_TERMS {
-            let d = da + db - 2.0 * dn + ln_w;
-            let x = exprel(e * d);
-            let term = -r * wn * d * x;
-            let q = d * x;
-            sum += term;
-            let nf = n as f64;
-            slope += r * wn * ((nf + e) * q + 1.0);
-            wn *= w;
-            if wn == 0.0 || (n > 0 && term.abs() <= SERIES_TOL * sum.abs()) {
-                break;
+        let big_b = if e == 0.0 { 0.0 } else { (e * ln_w).exp_m1() };
+        let (mut wn, mut sum, mut slope) = (1.0, 0.0, 0.0);
+        'chunks: for i in 0..CHUNKS {
+            for (j, t) in self.chunk(i).terms.iter().enumerate() {
+                let q = if e == 0.0 {
+                    t.d0 + ln_w
+                } else {
+                    (t.am1 + big_b + t.am1 * big_b) / e
+                };
+                let term = -t.r * wn * q;
+                sum += term;
+                let nf = (i * CHUNK + j) as f64;
+                slope += t.r * wn * ((nf + e) * q + 1.0);
+                wn *= w;
+                if wn == 0.0 || (nf > 0.0 && term.abs() <= SERIES_TOL * sum.abs()) {
+                    break 'chunks;
+                }
             }
-            da += log_slope(a + nf, e);
-            db += log_slope(b + nf, e);
-            dn += log_slope(nf + 1.0 - e, 2.0 * e);
-            r *= (a + nf) * (b + nf) / ((nf + 1.0) * (nf + 1.0 - e));
         }
         (k.prefactor * sum, k.prefactor * z * slope)
     }
