@@ -90,6 +90,11 @@ const FORWARD_SPAN: f64 = 1.5;
 /// degree: the ratio's error falls like rho^(-2 m), e^-40 = 4e-18 at m ln rho = 20.
 const MILLER_SPAN: f64 = 20.0;
 
+/// Size at which Miller's unnormalised backward recurrence is scaled down, 2^500 (it grows like
+/// rho per step; a power of two scales exactly, and any one far from the overflow threshold
+/// serves).
+const RESCALE: f64 = f64::from_bits((1023 + 500) << 52);
+
 /// The deepest start of the backward recurrence for n functions: it runs backward only where
 /// n ln rho > [`FORWARD_SPAN`], so from at most n + MILLER_SPAN n / FORWARD_SPAN.
 fn deepest(n: usize) -> usize {
@@ -197,7 +202,7 @@ impl JacobiFamily {
             *o = w * cur;
             if k + 1 < self.n {
                 let back = if k == 0 { 0.0 } else { r.off[k - 1] * prev };
-                let next = ((p.y - r.diag[k]) * cur - back) / r.off[k];
+                let next = ((p.y - r.diag[k]) * cur - back) * r.inv_off[k];
                 (prev, cur) = (cur, next);
             }
         }
@@ -235,31 +240,48 @@ impl JacobiFamily {
         let r = &self.rec;
         let ln_rho = p.ln_rho();
         if p.inside() || (n as f64) * ln_rho <= FORWARD_SPAN {
-            let (mut prev, mut cur) = (0.0, out[0]);
-            for k in 0..n - 1 {
-                let back = if k == 0 {
-                    -self.mass / PI
-                } else {
-                    r.off[k - 1] * prev
-                };
-                let next = ((p.y - r.diag[k]) * cur - back) / r.off[k];
+            // T_1 from the inhomogeneous step, then T_(k+1) = A_k T_k - B_k T_(k-1) with the
+            // divisions by off[k] as multiplications (one fused step per degree on the
+            // dependency chain)
+            out[1] = ((p.y - r.diag[0]) * out[0] + self.mass / PI) * r.inv_off[0];
+            let (mut prev, mut cur) = (out[0], out[1]);
+            for k in 1..n - 1 {
+                let next =
+                    (p.y - r.diag[k]) * r.inv_off[k] * cur - r.off[k - 1] * r.inv_off[k] * prev;
                 out[k + 1] = next;
                 (prev, cur) = (cur, next);
             }
         } else {
-            // ratios r_k = T_k / T_{k-1} from r_m = 0, m well above n
+            // Miller: the minimal solution f_k, unnormalised, by the homogeneous recurrence
+            // backward from f_m = 0, f_(m-1) = 1, m well above n,
+            //   f_(k-1) = ((y - diag_k) f_k - off_k f_(k+1)) / off_(k-1),
+            // rescaled before it can overflow (it grows like rho per step); then
+            // T_k = T_0 f_k / f_0
             let m = (n + (MILLER_SPAN / ln_rho).ceil() as usize).min(deepest(n));
-            // the ratios r_k = T_k / T_{k-1} from r_m = 0, stored in out[k] for k < n
-            let mut ratio = 0.0;
+            let t0 = out[0];
+            let (mut next, mut cur) = (0.0, 1.0);
             for k in (1..m).rev() {
-                ratio = r.off[k - 1] / ((p.y - r.diag[k]) - r.off[k] * ratio);
-                if k < n {
-                    out[k] = ratio;
+                let inv = r.inv_off[k - 1];
+                let prev = (p.y - r.diag[k]) * inv * cur - r.off[k] * inv * next;
+                (next, cur) = (cur, prev);
+                if k - 1 < n {
+                    out[k - 1] = cur;
+                }
+                if cur.abs() > RESCALE {
+                    next /= RESCALE;
+                    cur /= RESCALE;
+                    if k - 1 < n {
+                        for v in &mut out[k - 1..n] {
+                            *v /= RESCALE;
+                        }
+                    }
                 }
             }
-            for k in 1..n {
-                out[k] *= out[k - 1];
+            let norm = t0 / cur;
+            for v in &mut out[1..n] {
+                *v *= norm;
             }
+            out[0] = t0;
         }
     }
 }
@@ -433,10 +455,11 @@ mod tests {
                 );
             }
         }
-        for d in [1e-12, 1e-8, 1e-4, 0.01, 0.3, 2.0, 50.0] {
+        // (1e6: Miller's unnormalised recurrence grows past 2^500 there and is rescaled)
+        for d in [1e-12, 1e-8, 1e-4, 0.01, 0.3, 2.0, 50.0, 1e6] {
             let p = Point::offsets(-d, 2.0 + d);
             fam.transforms(p, &mut t);
-            let r = 1.0 + d - (d * (2.0 + d)).sqrt();
+            let r = 1.0 / (1.0 + d + (d * (2.0 + d)).sqrt());
             for (k, tk) in t.iter().enumerate() {
                 let exact = -r.powi(k as i32 + 1);
                 let err = (tk - exact).abs() / exact.abs();

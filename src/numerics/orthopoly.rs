@@ -85,7 +85,7 @@ pub(crate) struct JacobiRecurrence {
     /// sqrt(b_{k+1}), k < n - 1.
     pub(crate) off: Vec<f64>,
     /// 1 / off[k], and 1 for the last step (which gives a multiple of p_n).
-    inv_off: Vec<f64>,
+    pub(crate) inv_off: Vec<f64>,
 }
 
 impl JacobiRecurrence {
