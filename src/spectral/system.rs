@@ -197,26 +197,27 @@ impl Basis {
         )
     }
 
-    /// The columns' values (p and q parts) at a point of the zone it lies in.
-    pub(crate) fn tractions_row(&self, p: &Pt, pv: &mut [f64], qv: &mut [f64]) {
+    /// The columns' values (p and q parts) at a point of the zone it lies in; `buf` of
+    /// length [`Basis::scratch_len`] at least.
+    pub(crate) fn tractions_row(&self, p: &Pt, pv: &mut [f64], qv: &mut [f64], buf: &mut [f64]) {
         pv.fill(0.0);
         qv.fill(0.0);
-        let mut buf = vec![0.0; self.scratch];
+        let buf = &mut buf[..self.scratch];
         let (q0, s0) = self.starts();
         if p.xmc < 0.0 {
             let t = self.tau(p);
             let n0 = self.stick[0].len();
-            self.stick[0].values(t, &mut buf, &mut pv[..n0]);
+            self.stick[0].values(t, buf, &mut pv[..n0]);
             let n1 = self.stick[1].len();
-            self.stick[1].values(t, &mut buf, &mut qv[q0..q0 + n1]);
+            self.stick[1].values(t, buf, &mut qv[q0..q0 + n1]);
             let n2 = self.stick[2].len();
-            self.stick[2].values(t, &mut buf, &mut qv[q0 + n1..q0 + n1 + n2]);
+            self.stick[2].values(t, buf, &mut qv[q0 + n1..q0 + n1 + n2]);
         } else {
             let (s, _) = self.s_pair(p);
             let mut at = s0;
             for b in &self.slip {
                 let n = b.len();
-                b.values(s, &mut buf, &mut pv[at..at + n]);
+                b.values(s, buf, &mut pv[at..at + n]);
                 at += n;
             }
             for j in s0..at {
@@ -328,15 +329,17 @@ pub(crate) fn solve_fixed(k: Constants, c: f64, w: f64, sizes: Sizes) -> Result<
     let mut r = 0;
     // each point's p columns, for (R1) after the solve
     let mut p_rows = Vec::with_capacity((stick.len() + slip.len()) * n);
+    let mut weights = Vec::with_capacity(stick.len() + slip.len());
     for (pt, on_stick) in stick
         .iter()
         .map(|p| (p, true))
         .chain(slip.iter().map(|p| (p, false)))
     {
-        basis.tractions_row(pt, &mut pv, &mut qv);
+        basis.tractions_row(pt, &mut pv, &mut qv, &mut scratch);
         basis.hilbert_row(pt, &mut hp, &mut hq, &mut scratch);
         p_rows.extend_from_slice(&pv);
         let weight = pt.omx.powf(k.g);
+        weights.push(weight);
         let row = &mut a[r * cols..(r + 1) * cols];
         for j in 0..n {
             row[j] = weight * (hp[j] - k.b * qv[j]);
@@ -370,8 +373,8 @@ pub(crate) fn solve_fixed(k: Constants, c: f64, w: f64, sizes: Sizes) -> Result<
     // x = c (C2)
     let (mut ps, mut qs, mut pc, mut qc) = (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]);
     let at_c = |xmc| Pt { x: c, omx: w, xmc };
-    basis.tractions_row(&at_c(-f64::MIN_POSITIVE), &mut ps, &mut qs);
-    basis.tractions_row(&at_c(0.0), &mut pc, &mut qc);
+    basis.tractions_row(&at_c(-f64::MIN_POSITIVE), &mut ps, &mut qs, &mut scratch);
+    basis.tractions_row(&at_c(0.0), &mut pc, &mut qc, &mut scratch);
     let integral = basis.integrals();
     let mut cons: Vec<(Vec<f64>, f64)> = [
         (integral, 1.0),
@@ -462,10 +465,10 @@ pub(crate) fn solve_fixed(k: Constants, c: f64, w: f64, sizes: Sizes) -> Result<
     // (R1): each row's residual relative to the smallest term of its equation, b mu p in
     // (E1) (|q| <= mu p) and b p in (E2), in the rows' weights
     let mut r = 0;
-    for (i, (pt, on_stick)) in stick
+    for (i, on_stick) in stick
         .iter()
-        .map(|p| (p, true))
-        .chain(slip.iter().map(|p| (p, false)))
+        .map(|_| true)
+        .chain(slip.iter().map(|_| false))
         .enumerate()
     {
         let p: f64 = p_rows[i * n..(i + 1) * n]
@@ -473,7 +476,7 @@ pub(crate) fn solve_fixed(k: Constants, c: f64, w: f64, sizes: Sizes) -> Result<
             .zip(&fixed.coef)
             .map(|(a, b)| a * b)
             .sum();
-        let size = k.b * p * pt.omx.powf(k.g);
+        let size = k.b * p * weights[i];
         for (eq, scale) in [(true, k.mu), (on_stick, 1.0)] {
             if eq {
                 let row = &a[r * cols..(r + 1) * cols];
@@ -500,8 +503,10 @@ impl Fixed {
     /// (docs/theory_spectral.md (R2)).
     pub(crate) fn eval_with_noise(&self, p: &Pt) -> (f64, f64, f64) {
         let n = self.coef.len();
-        let (mut pv, mut qv) = (vec![0.0; n], vec![0.0; n]);
-        self.basis.tractions_row(p, &mut pv, &mut qv);
+        let mut work = vec![0.0; 2 * n + self.basis.scratch_len()];
+        let (pv, rest) = work.split_at_mut(n);
+        let (qv, buf) = rest.split_at_mut(n);
+        self.basis.tractions_row(p, pv, qv, buf);
         let (mut value, mut size) = (0.0, 0.0);
         for (v, a) in pv.iter().zip(&self.coef) {
             value += v * a;
