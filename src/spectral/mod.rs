@@ -140,9 +140,10 @@ fn serves(k: Constants, lc: f64) -> bool {
 /// and the tractions within `traction_tol` (dq~ weighed by `delta`), or None where no level
 /// up to [`MAX_LEVEL`] gets there or the answer is not admissible (the panels answer then).
 ///
-/// Level 1 is solved at lc and at lc + [`SLOPE_STEP`]: sigma's slope, and how far the
-/// tractions move per unit of lc. Where `bound` <= `tol`, [`at_fixed_edge`] keeps lc; else,
-/// or where the table's c does not serve, [`newton_ladder`] moves it.
+/// Level 1 is solved at lc. Where `bound` <= `tol`, [`at_fixed_edge`] keeps lc, with sigma's
+/// slope and the tractions' move per unit of lc bounded ([`SLOPE_FLOOR`], [`RATE_BOUND`]) or,
+/// where the bounds do not decide, measured ([`First::measured`]); else, or where the table's c
+/// does not serve, [`newton_ladder`] moves lc with the measured slope.
 pub(crate) fn from_edge(
     k: Constants,
     lc: f64,
@@ -155,36 +156,72 @@ pub(crate) fn from_edge(
         return None;
     }
     let edge = StickEdge::from_logit(lc);
-    let first = Sizes::at(FIRST_LEVEL, edge.c, edge.one_minus_c);
-    let base = sigma_at(k, lc, first)?;
-    let shifted = sigma_at(k, lc + SLOPE_STEP, first)?.fixed;
-    let slope = (shifted.sigma - base.fixed.sigma) / SLOPE_STEP;
-    if slope == 0.0 || !slope.is_finite() {
-        return None;
-    }
-    let rules = Rules::new(k.g);
-    let (mp, mq) = distance(&shifted, &base.fixed, &rules);
-    let first = First {
+    let base = sigma_at(k, lc, Sizes::at(FIRST_LEVEL, edge.c, edge.one_minus_c))?;
+    let mut first = First {
         base,
-        slope,
-        rate: (mp / SLOPE_STEP, mq / SLOPE_STEP),
-        rules,
+        rules: Rules::new(k.g),
+        measured: None,
     };
     let fixed = if bound <= tol {
-        at_fixed_edge(k, &first, bound, traction_tol, delta)
+        at_fixed_edge(k, &mut first, bound, traction_tol, delta)
     } else {
         None
     };
-    fixed.or_else(|| newton_ladder(k, &first, tol, traction_tol, delta))
+    fixed.or_else(|| {
+        first.measured(k)?;
+        newton_ladder(k, &first, tol, traction_tol, delta)
+    })
 }
 
-/// Level 1 at the starting lc, with sigma's slope, the tractions' move per unit of lc
-/// (int |dp|, int |dq~|) / dlc, and the Gauss rules of [`distance`] for its g.
+/// Lower bound on sigma's slope d sigma / d lc per unit of b*, where the bases serve. Measured
+/// at level 1 over lc + [`SLOPE_STEP`]: on the 604 served points of a 53 x 53 grid of the
+/// table's coordinates the slope was 8.3e-3 .. 0.19 and slope / b* 0.031 .. 0.19 (the smallest
+/// at the smallest stick zones, c = 9e-5, g = 0.496); at the smallest stick zone served
+/// (b* = 0.25, c = 4.2e-5) slope / b* was 0.029. The bound is 0.0125, under half of that.
+const SLOPE_FLOOR: f64 = 0.0125;
+
+/// Upper bounds on the tractions' move per unit of lc, (int |dp|, int |dq~|) / dlc, where the
+/// bases serve. Measured at level 1 over lc + [`SLOPE_STEP`] on the 604 served points of a
+/// 53 x 53 grid of the table's coordinates: at most 1.86 and 4.14 (b* = 0.96, g = 0.03, the
+/// served corner of small g and large b*; below 1e-3 where c < 2e-4). The bounds are about
+/// twice those.
+const RATE_BOUND: (f64, f64) = (4.0, 8.0);
+
+/// Level 1 at the starting lc, the Gauss rules of [`distance`] for its g, and, once measured,
+/// sigma's slope and the tractions' move per unit of lc.
 struct First {
     base: Level,
+    rules: Rules,
+    measured: Option<Sensitivity>,
+}
+
+/// sigma's slope and the tractions' move per unit of lc, (int |dp|, int |dq~|) / dlc.
+#[derive(Clone, Copy)]
+struct Sensitivity {
     slope: f64,
     rate: (f64, f64),
-    rules: Rules,
+}
+
+impl First {
+    /// The slope and the rate, measured on first use: level 1 again at lc + [`SLOPE_STEP`].
+    fn measured(&mut self, k: Constants) -> Option<Sensitivity> {
+        if self.measured.is_none() {
+            let lc = self.base.lc;
+            let e = StickEdge::from_logit(lc);
+            let sizes = Sizes::at(FIRST_LEVEL, e.c, e.one_minus_c);
+            let shifted = sigma_at(k, lc + SLOPE_STEP, sizes)?.fixed;
+            let slope = (shifted.sigma - self.base.fixed.sigma) / SLOPE_STEP;
+            if slope == 0.0 || !slope.is_finite() {
+                return None;
+            }
+            let (mp, mq) = distance(&shifted, &self.base.fixed, &self.rules);
+            self.measured = Some(Sensitivity {
+                slope,
+                rate: (mp / SLOPE_STEP, mq / SLOPE_STEP),
+            });
+        }
+        self.measured
+    }
 }
 
 /// The tractions at the starting lc, whose c is within `bound` of the exact one: one solve per
@@ -193,36 +230,50 @@ struct First {
 /// Each level also checks the edge: the root its sigma points to, sigma / slope away, must lie
 /// within the bound plus [`SAFETY`] times the two levels' difference, else None; None at once
 /// where the move alone exceeds `traction_tol`. c keeps its bound as its estimate.
+///
+/// The slope and the move per lc are the bounds [`SLOPE_FLOOR`] and [`RATE_BOUND`] (a smaller
+/// slope and a larger move only make both tests stricter) until a test fails with them; then
+/// they are measured ([`First::measured`]) and the test is repeated.
 fn at_fixed_edge(
     k: Constants,
-    first: &First,
+    first: &mut First,
     bound: f64,
     traction_tol: f64,
     delta: f64,
 ) -> Option<Spectral> {
-    let (lc, slope) = (first.base.lc, first.slope);
+    let lc = first.base.lc;
     let edge = StickEdge::from_logit(lc);
     let (c, w) = (edge.c, edge.one_minus_c);
     let uncertainty = bound / (c * w);
-    let moved = (
-        SAFETY * first.rate.0 * uncertainty,
-        SAFETY * first.rate.1 * uncertainty,
-    );
-    if moved.0 + delta * moved.1 > traction_tol {
-        // the bound on c alone moves the tractions by more than the tolerance (thin slip
-        // zones: they move like 1 / (1 - c) per unit of c)
-        return None;
+    let moved = |s: Option<Sensitivity>| {
+        let rate = s.map_or(RATE_BOUND, |s| s.rate);
+        (SAFETY * rate.0 * uncertainty, SAFETY * rate.1 * uncertainty)
+    };
+    let mut shift = moved(first.measured);
+    if shift.0 + delta * shift.1 > traction_tol {
+        shift = moved(Some(first.measured(k)?));
+        if shift.0 + delta * shift.1 > traction_tol {
+            // the bound on c alone moves the tractions by more than the tolerance (thin slip
+            // zones: they move like 1 / (1 - c) per unit of c)
+            return None;
+        }
     }
     let mut prev = first.base.fixed.clone();
     for level in FIRST_LEVEL + 1..=MAX_LEVEL {
         let cur = sigma_at(k, lc, Sizes::at(level, c, w))?.fixed;
-        let offset = (cur.sigma / slope).abs();
-        let noise = ((cur.sigma - prev.sigma) / slope).abs();
-        if offset > uncertainty + SAFETY * noise {
-            return None;
+        let off_edge = |s: Option<Sensitivity>| {
+            let slope = s.map_or(SLOPE_FLOOR * k.b, |s| s.slope.abs());
+            (cur.sigma / slope).abs()
+                > uncertainty + SAFETY * ((cur.sigma - prev.sigma) / slope).abs()
+        };
+        if off_edge(first.measured) {
+            if first.measured.is_some() || off_edge(Some(first.measured(k)?)) {
+                return None;
+            }
+            shift = moved(first.measured);
         }
         let (dp, dq) = distance(&cur, &prev, &first.rules);
-        let parts = (SAFETY * dp + moved.0, SAFETY * dq + moved.1);
+        let parts = (SAFETY * dp + shift.0, SAFETY * dq + shift.1);
         if parts.0 + delta * parts.1 <= traction_tol && cur.residual <= traction_tol {
             match verdict(&cur, k.mu, traction_tol, delta, parts) {
                 Verdict::Answer(parts) => {
@@ -259,7 +310,7 @@ fn newton_ladder(
     traction_tol: f64,
     delta: f64,
 ) -> Option<Spectral> {
-    let slope = first.slope;
+    let Sensitivity { slope, rate } = first.measured?;
     let mut lc = first.base.lc;
     let mut prev_step = -first.base.fixed.sigma / slope;
     let mut prev_root = lc + prev_step;
@@ -275,8 +326,8 @@ fn newton_ladder(
         let error = SAFETY * (distance_c + c * w * (step.abs() + prev_step.abs()));
         let (dp, dq) = distance(&cur, &prev, &first.rules);
         let parts = (
-            SAFETY * (dp + first.rate.0 * step.abs()),
-            SAFETY * (dq + first.rate.1 * step.abs()),
+            SAFETY * (dp + rate.0 * step.abs()),
+            SAFETY * (dq + rate.1 * step.abs()),
         );
         if error <= tol && parts.0 + delta * parts.1 <= traction_tol && cur.residual <= traction_tol
         {
@@ -300,7 +351,7 @@ fn newton_ladder(
             0
         };
         if stalled >= STALLED_LEVELS
-            && SAFETY * (first.rate.0 + delta * first.rate.1) * step.abs() > traction_tol
+            && SAFETY * (rate.0 + delta * rate.1) * step.abs() > traction_tol
         {
             return None;
         }

@@ -177,3 +177,75 @@ fn newton_ladder_moves_to_the_root() {
         }
     }
 }
+
+/// The bounds that stand in for the measured slope and move per lc at a known stick edge
+/// ([`SLOPE_FLOOR`], [`RATE_BOUND`], measured on a 53 x 53 grid) hold on another grid of the
+/// table's coordinates (37 x 37, none of its nodes on the first) and at the smallest stick
+/// zones served, measured as [`First::measured`] measures them.
+#[test]
+fn sensitivity_bounds_hold() {
+    let patches = crate::stick_edge_table::patches();
+    let span = |f: fn(&crate::stick_edge_table::Patch) -> [f64; 2]| {
+        patches
+            .iter()
+            .map(f)
+            .fold([f64::INFINITY, 0.0f64], |[lo, hi], r| {
+                [lo.min(r[0]), hi.max(r[1])]
+            })
+    };
+    let ([lo_b, hi_b], [lo_z, hi_z]) = (span(|p| p.beta), span(|p| p.zeta));
+    let grid = 37;
+    let mut scenes: Vec<(f64, f64)> = (0..grid * grid)
+        .map(|n| {
+            let (i, j) = (n / grid, n % grid);
+            let beta = lo_b + (hi_b - lo_b) * (i as f64 + 0.5) / grid as f64;
+            let zeta = lo_z + (hi_z - lo_z) * (j as f64 + 0.5) / grid as f64;
+            crate::stick_edge_table::coupling_at(beta, zeta)
+        })
+        .collect();
+    // the smallest stick zones served (c = 4.2e-5 .. 9e-5)
+    scenes.extend([
+        (0.25, 0.0354),
+        (0.4, 0.0619),
+        (0.6, 0.1082),
+        (0.8, 0.1893),
+        (0.99, 0.6659),
+    ]);
+    let (mut served, mut worst) = (0, [0.0f64; 3]);
+    for (b, mu) in scenes {
+        let Some((lc, _)) = crate::stick_edge_table::lookup(b, mu) else {
+            continue;
+        };
+        let k = consts(b, mu);
+        if !serves(k, lc) {
+            continue;
+        }
+        let e = StickEdge::from_logit(lc);
+        let base = sigma_at(k, lc, Sizes::at(FIRST_LEVEL, e.c, e.one_minus_c)).expect("level 1");
+        let mut first = First {
+            base,
+            rules: Rules::new(k.g),
+            measured: None,
+        };
+        let s = first.measured(k).expect("measured");
+        served += 1;
+        worst[0] = worst[0].max(SLOPE_FLOOR * b / s.slope.abs());
+        worst[1] = worst[1].max(s.rate.0 / RATE_BOUND.0);
+        worst[2] = worst[2].max(s.rate.1 / RATE_BOUND.1);
+        assert!(
+            s.slope.abs() >= SLOPE_FLOOR * b,
+            "({b}, {mu}): slope {:e} below the floor",
+            s.slope
+        );
+        assert!(
+            s.rate.0 <= RATE_BOUND.0 && s.rate.1 <= RATE_BOUND.1,
+            "({b}, {mu}): move per lc {:?} above the bound",
+            s.rate
+        );
+    }
+    eprintln!(
+        "{served} served points; floor / slope at most {:.2}, rate / bound at most {:.2} (p), {:.2} (q)",
+        worst[0], worst[1], worst[2]
+    );
+    assert!(served > 250, "only {served} served points");
+}
