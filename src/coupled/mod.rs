@@ -905,13 +905,22 @@ fn spectral_from_table(k: &Coupling, tol: f64, traction_tol: f64) -> Option<Coup
     if r.mu >= MU_EXTRAPOLATE {
         return None;
     }
-    let (lc, bound) = crate::stick_edge_table::lookup(r.bp, r.mu)?;
     let consts = crate::spectral::Constants {
         b: r.bp,
         mu: r.mu,
         g: r.edge_exponent(),
     };
-    let s = crate::spectral::from_edge(consts, lc, bound, tol, traction_tol, delta)?;
+    let s = match crate::stick_edge_table::lookup(r.bp, r.mu) {
+        Some((lc, bound)) => {
+            crate::spectral::from_edge(consts, lc, bound, tol, traction_tol, delta)?
+        }
+        None => {
+            // outside the table (b* < 0.25): from Spence's stick edge
+            let e = crate::spence::solve(&r).ok()?.edge();
+            let lc0 = e.c.ln() - e.one_minus_c.ln();
+            crate::spectral::from_guess(consts, lc0, tol, traction_tol, delta)?
+        }
+    };
     Some(CoupledSolution {
         coupling: *k,
         edge: s.edge,
