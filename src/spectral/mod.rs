@@ -192,9 +192,10 @@ pub(crate) fn from_edge(
 /// (`coupled::tests::spectral_agrees_with_the_panels_outside_the_table*`).
 const GUESS_B_MIN: f64 = 0.02;
 
-/// Most level-1 steps of [`from_guess`]: from Spence's stick edge at b* < 0.25 the search
-/// took 2-3 before level 1's rounding stopped it (c = 0.04 .. 0.99); more means it is not
-/// converging and the panels answer.
+/// Most level-1 steps of [`from_guess`]: from Spence's stick edge at the 6 scenes of
+/// `coupled::tests::spectral_agrees_with_the_panels_outside_the_table` (b* = 0.02 .. 0.24,
+/// c = 4.5e-5 .. 1 - 1.2e-4) the search took 2-4 before level 1's rounding stopped it; more
+/// means it is not converging and the panels answer.
 const GUESS_STEPS: usize = 10;
 
 /// Largest level-1 step in lc of [`from_guess`] (a guess off by more is not trusted to
