@@ -38,18 +38,21 @@ pub(crate) fn normal_specs(k: &Coupling, c: f64, w: f64) -> Vec<ZoneSpec> {
             len: w,
             p: [vec![-g], vec![0.0, g]],
             q: [vec![], vec![]],
+            near: [None, None],
         },
         ZoneSpec {
             kind: Kind::Stick,
             len: 2.0 * c,
             p: [vec![0.0], vec![0.0]],
             q: [vec![0.0, g], vec![0.0, g]],
+            near: [None, None],
         },
         ZoneSpec {
             kind: Kind::Slip(1.0),
             len: w,
             p: [vec![0.0, g], vec![-g]],
             q: [vec![], vec![]],
+            near: [None, None],
         },
     ]
 }
@@ -87,6 +90,7 @@ pub(crate) fn monotonic_specs(k: &Coupling, edge: Edge, c2: f64, c: f64, w: f64)
                 len: w1,
                 p: [vec![-g], vec![0.0, g]],
                 q: [vec![], vec![]],
+                near: [None, None],
             });
             (w1, vec![0.0], vec![0.0, g])
         }
@@ -98,12 +102,14 @@ pub(crate) fn monotonic_specs(k: &Coupling, edge: Edge, c2: f64, c: f64, w: f64)
             len: w - w1,
             p: [stick_lo_p, vec![0.0, g]],
             q: [stick_lo_q, vec![0.0, g]],
+            near: [None, None],
         });
         specs.push(ZoneSpec {
             kind: Kind::Stick,
             len: c2 + c,
             p: [vec![0.0], vec![0.0]],
             q: [vec![0.0, g], vec![0.0, g]],
+            near: [None, None],
         });
     } else {
         specs.push(ZoneSpec {
@@ -111,6 +117,8 @@ pub(crate) fn monotonic_specs(k: &Coupling, edge: Edge, c2: f64, c: f64, w: f64)
             len: (1.0 + c2) - w1,
             p: [stick_lo_p, vec![0.0]],
             q: [stick_lo_q, vec![0.0, g]],
+            // the forcing's singular point -c lies c2 + c beyond c2
+            near: [None, Some(-c - c2)],
         });
     }
     specs.push(ZoneSpec {
@@ -118,6 +126,7 @@ pub(crate) fn monotonic_specs(k: &Coupling, edge: Edge, c2: f64, c: f64, w: f64)
         len: 1.0 - c2,
         p: [vec![0.0, g], vec![-g]],
         q: [vec![], vec![]],
+        near: [None, None],
     });
     specs
 }
@@ -273,7 +282,9 @@ pub(crate) fn monotonic_level(
                 let d_c2 = -(-j[1][0] * f[0] + j[0][0] * f[1]) / det;
                 let damp = 1.0f64.min(1.0 / d_lw.abs()).min(0.05 / d_c2.abs());
                 lw += damp * d_lw;
-                c2 += damp * d_c2;
+                c2 = (c2 + damp * d_c2).clamp(-1.0 + 2.0 * lw.exp(), c - 1e-6);
+                // the edge zone stays within half the span to c2
+                lw = lw.min((0.5 * (1.0 + c2)).ln());
                 if lw.exp() < W1_MIN {
                     return Err(Error::NoConvergence(format!(
                         "exact: the trailing edge zone went below {W1_MIN:e}, thinner than \
@@ -461,14 +472,17 @@ pub(crate) fn monotonic(k: &Coupling, qp: f64, tol: f64, traction_tol: f64) -> R
             Ok(s.sigma[0] - s.sigma[1])
         };
         let mut hi = 0.3f64.min(0.5 * (1.0 + c2_start));
-        let mut f_hi = at(hi)?;
+        // (a width whose solve fails gives no sign and is passed over)
+        let mut f_hi = at(hi).ok();
         solves += 1;
         let mut found = None;
         while hi > W1_MIN {
             let lo = 0.1 * hi;
-            let f_lo = at(lo)?;
+            let f_lo = at(lo).ok();
             solves += 1;
-            if f_lo.signum() != f_hi.signum() {
+            if let (Some(a), Some(b)) = (f_lo, f_hi)
+                && a.signum() != b.signum()
+            {
                 found = Some((lo * hi).sqrt());
                 break;
             }

@@ -27,15 +27,18 @@ pub(crate) enum Kind {
     Slip(f64),
 }
 
-/// One zone: its kind, its length, and its components' exponents at the two ends
-/// ([lo, hi]; q's are unused on a slip zone). Every exponent list holds 0 or values in
-/// (-1, 1) whose sums over the two ends exceed -1.
+/// One zone: its kind, its length, its components' exponents at the two ends ([lo, hi];
+/// q's are unused on a slip zone), and the distance beyond each end to a singular point of
+/// the solution's continuation that is no zone end (the forcing's -c beyond c2, section
+/// 11), if nearer than the neighbouring zone's far end. Every exponent list holds 0 or
+/// values in (-1, 1) whose sums over the two ends exceed -1.
 #[derive(Clone, Debug)]
 pub(crate) struct ZoneSpec {
     pub(crate) kind: Kind,
     pub(crate) len: f64,
     pub(crate) p: [Vec<f64>; 2],
     pub(crate) q: [Vec<f64>; 2],
+    pub(crate) near: [Option<f64>; 2],
 }
 
 /// A point of zone `zone` given by its offsets from the zone's ends, each to full relative
@@ -71,6 +74,8 @@ struct Zone {
     /// 1 + lo and 1 - hi (offsets of the zone's ends from the contact's ends).
     opl: f64,
     omh: f64,
+    /// Distances beyond the ends to the nearest singular point (None at the contact's ends).
+    near: [Option<f64>; 2],
     /// p blocks, then q blocks (stick only).
     p: Vec<Block>,
     q: Vec<Block>,
@@ -120,9 +125,12 @@ impl Frame {
             let len = s.len;
             // poles beyond the nearest zone boundary outside each end, from a tenth of the
             // distance to it out to the zone's length (docs/theory_spectral.md (B4))
+            let near = [
+                (i > 0).then(|| specs[i - 1].len.min(s.near[0].unwrap_or(f64::INFINITY))),
+                (i + 1 < nz).then(|| specs[i + 1].len.min(s.near[1].unwrap_or(f64::INFINITY))),
+            ];
             let mut poles = Vec::new();
-            if i > 0 {
-                let d = specs[i - 1].len;
+            if let Some(d) = near[0] {
                 let n = ((len / (0.1 * d)).log10().max(0.0) * sizes.per_decade).ceil() as usize;
                 for z in log_spaced(0.1 * d, len, n) {
                     // x = lo - d - z: t = -1 - 2 (d + z) / len
@@ -130,8 +138,7 @@ impl Frame {
                     poles.push(Point::offsets(2.0 + o, -o));
                 }
             }
-            if i + 1 < nz {
-                let d = specs[i + 1].len;
+            if let Some(d) = near[1] {
                 let n = ((len / (0.1 * d)).log10().max(0.0) * sizes.per_decade).ceil() as usize;
                 for z in log_spaced(0.1 * d, len, n) {
                     let o = 2.0 * (d + z) / len;
@@ -161,6 +168,7 @@ impl Frame {
                 len,
                 opl: opl[i],
                 omh: omh[i],
+                near,
                 p,
                 q,
                 start,
@@ -325,9 +333,9 @@ impl Frame {
     }
 
     /// Collocation points: `per_col` Chebyshev points per column of each zone, and points
-    /// spaced geometrically (`per_decade` per decade) towards each end from a tenth of the zone, down to
-    /// 1e-6 of it at the contact's ends and to a hundredth of the neighbouring zone's length
-    /// (at most 1e-3) at the others.
+    /// spaced geometrically (`per_decade` per decade) towards each end from a tenth of the
+    /// zone, down to 1e-6 of it at the contact's ends and to a hundredth of the distance to
+    /// the nearest singular point beyond (at most 1e-3) at the others.
     pub(crate) fn collocation(&self, per_col: f64, per_decade: f64) -> Vec<Loc> {
         let mut out = Vec::new();
         let nz = self.zones.len();
@@ -342,14 +350,11 @@ impl Frame {
                     to_hi: z.len * b,
                 });
             }
-            let depth = |nb: Option<usize>| match nb {
-                None => 1e-6,
-                Some(j) => (1e-2 * self.zones[j].len / z.len).min(1e-3),
-            };
-            let lo_nb = if i > 0 { Some(i - 1) } else { None };
-            let hi_nb = if i + 1 < nz { Some(i + 1) } else { None };
-            for (nb, lo_end) in [(lo_nb, true), (hi_nb, false)] {
-                let d = depth(nb);
+            for (near, lo_end) in [(z.near[0], true), (z.near[1], false)] {
+                let d = match near {
+                    None => 1e-6,
+                    Some(d) => (1e-2 * d / z.len).min(1e-3),
+                };
                 let n = ((0.1 / d).log10() * per_decade).ceil().max(1.0) as usize;
                 for k in 0..=n {
                     let f = 0.1 * (d / 0.1).powf(k as f64 / n as f64);

@@ -475,11 +475,15 @@ fn measure_monotonic() {
         );
     }
     for qp in [0.0018, 0.018, 0.054, 0.09, 0.135, 0.18, 0.225, 0.27, 0.29] {
+        let t = std::time::Instant::now();
         match monotonic(&ply(), qp, 1e-10, 1e-6) {
             Ok(m) => println!(
-                "ply Q/P {qp}: w1 {:.4e} c2 {:.10}",
+                "ply Q/P {qp}: w1 {:.4e} c2 {:.10} est ({:.1e}, {:.1e}) {:.0} ms",
                 m.level.w1(),
-                m.level.c2
+                m.level.c2,
+                m.c_error,
+                m.traction_error,
+                t.elapsed().as_secs_f64() * 1e3
             ),
             Err(e) => println!("ply Q/P {qp}: {e}"),
         }
