@@ -338,7 +338,6 @@ impl Frame {
     /// the nearest singular point beyond (at most 1e-3) at the others.
     pub(crate) fn collocation(&self, per_col: f64, per_decade: f64) -> Vec<Loc> {
         let mut out = Vec::new();
-        let nz = self.zones.len();
         for (i, z) in self.zones.iter().enumerate() {
             let m = (per_col * z.count as f64).ceil().max(4.0) as usize;
             for k in 0..m {
