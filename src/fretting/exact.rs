@@ -282,7 +282,8 @@ pub(crate) fn monotonic_level(
                 let d_c2 = -(-j[1][0] * f[0] + j[0][0] * f[1]) / det;
                 let damp = 1.0f64.min(1.0 / d_lw.abs()).min(0.05 / d_c2.abs());
                 lw += damp * d_lw;
-                c2 = (c2 + damp * d_c2).clamp(-1.0 + 2.0 * lw.exp(), c - 1e-6);
+                // (the Jacobian's step in c2 stays left of c)
+                c2 = (c2 + damp * d_c2).clamp(-1.0 + 2.0 * lw.exp(), c - 10.0 * STEP_C2);
                 // the edge zone stays within half the span to c2
                 lw = lw.min((0.5 * (1.0 + c2)).ln());
                 if lw.exp() < W1_MIN {
@@ -428,6 +429,11 @@ pub(crate) struct Monotonic {
 /// millisecond; its c2 lies within about 0.2 / START_PANELS of the exact one at the ply).
 const START_PANELS: usize = 25;
 
+/// The edge zone's width while the start's c2 is corrected: about the ply's (1.2e-6 ..
+/// 1.6e-6, docs/theory_tangential.md section 10). At the ply, Q = 0.006 mu P, the border
+/// value at c2 moved by about 1e-4 per decade of w1 and by 1e-3 per 2e-3 of c2.
+const START_W1: f64 = 1e-6;
+
 /// Factor on the distance between two levels in the estimates.
 const SAFETY: f64 = 2.0;
 
@@ -452,6 +458,47 @@ pub(crate) fn monotonic(k: &Coupling, qp: f64, tol: f64, traction_tol: f64) -> R
         let mut h = crate::lcp::history::History::new(k, START_PANELS)?;
         h.load(qp, 1)?;
         h.state().stick.1.clamp(-1.0 + 1e-3, c - 1e-3)
+    };
+    // the border value at c2, sigma_0 + sigma_1, depends mostly on c2: a few secant steps
+    // on it at level 1 with a thin edge zone correct the grid's c2 where it is coarse
+    // against c - c2 (small loads: at the ply, Q = 0.006 mu P, the grid's 0.0719 against
+    // 0.085)
+    let c2_start = if k.bp == 0.0 {
+        c2_start
+    } else {
+        let lo = -1.0 + 2.0 * START_W1;
+        let f = |c2: f64| -> Option<f64> {
+            let edge = Edge::Zone {
+                w1: START_W1,
+                sign: -1.0,
+            };
+            let s = monotonic_fixed(k, &normal, c, w, edge, c2, qp, 1).ok()?;
+            Some(s.sigma[0] + s.sigma[1])
+        };
+        let top = c - 10.0 * STEP_C2;
+        let (mut a, mut b) = (c2_start, (c2_start + 1e-3).min(top));
+        let mut best = c2_start;
+        if let (Some(mut fa), Some(mut fb)) = (f(a), f(b)) {
+            solves += 2;
+            for _ in 0..8 {
+                if fb == fa {
+                    break;
+                }
+                let next = (b - fb * (b - a) / (fb - fa)).clamp(lo, top);
+                (a, fa) = (b, fb);
+                b = next;
+                match f(b) {
+                    Some(v) => fb = v,
+                    None => break,
+                }
+                solves += 1;
+                best = b;
+                if (b - a).abs() < 1e-6 {
+                    break;
+                }
+            }
+        }
+        best
     };
     let edge0 = if k.bp == 0.0 {
         Edge::None
@@ -525,9 +572,13 @@ pub(crate) fn monotonic(k: &Coupling, qp: f64, tol: f64, traction_tol: f64) -> R
         }
         prev = Some(l);
     }
-    let _ = trace;
+    let last = trace
+        .last()
+        .map_or((f64::NAN, f64::NAN, f64::NAN), |t| (t.2, t.3, t.4));
     Err(Error::NoConvergence(format!(
-        "exact: levels 1-8 did not agree to {tol:e} (c) and {traction_tol:e} (tractions)"
+        "exact: levels 1-8 did not agree to {tol:e} (c) and {traction_tol:e} (tractions): \
+         the last two moved c by {:e} and the tractions by {:e} (c2 = {})",
+        last.1, last.2, last.0
     )))
 }
 
