@@ -183,7 +183,8 @@ impl Level {
     }
 }
 
-/// Newton steps per level at most.
+/// Newton steps per level at most (the levels of docs/theory_tangential.md section 12 took
+/// 2-25 solves, i.e. at most about 8 steps with their Jacobians).
 const MAX_NEWTON: usize = 20;
 
 /// Finite-difference steps of the Jacobian in ln w1 and c2: far above sigma's rounding
@@ -280,6 +281,8 @@ pub(crate) fn monotonic_level(
                 }
                 let d_lw = -(j[1][1] * f[0] - j[0][1] * f[1]) / det;
                 let d_c2 = -(-j[1][0] * f[0] + j[0][0] * f[1]) / det;
+                // at most a factor e in w1 and 0.05 in c2 per step: the border constants vary
+                // on the scales of a decade of w1 and of c2 + c (section 10's scans)
                 let damp = 1.0f64.min(1.0 / d_lw.abs()).min(0.05 / d_c2.abs());
                 lw += damp * d_lw;
                 // (the Jacobian's step in c2 stays left of c)
@@ -434,7 +437,12 @@ const START_PANELS: usize = 25;
 /// value at c2 moved by about 1e-4 per decade of w1 and by 1e-3 per 2e-3 of c2.
 const START_W1: f64 = 1e-6;
 
-/// Factor on the distance between two levels in the estimates.
+/// Levels tried at most: the scenes of docs/theory_tangential.md section 12 stopped at
+/// levels 2-8 (698 unknowns at level 8).
+const MAX_LEVEL: usize = 8;
+
+/// Factor on the distance between two levels in the estimates (as the normal-load solver's,
+/// docs/theory_spectral.md (S6)).
 const SAFETY: f64 = 2.0;
 
 /// The monotonic end state at Q/P = qp (0 < qp < mu), c1, c2 to `tol` and the tractions to
@@ -547,7 +555,7 @@ pub(crate) fn monotonic(k: &Coupling, qp: f64, tol: f64, traction_tol: f64) -> R
     let mut trace = Vec::new();
     let mut prev: Option<Level> = None;
     let (mut edge, mut c2) = (edge0, c2_start);
-    for level in 1..=8 {
+    for level in 1..=MAX_LEVEL {
         let l = monotonic_level(k, &normal, c, w, edge, c2, qp, level, tol, &mut jac)?;
         solves += l.solves;
         (edge, c2) = (l.edge, l.c2);
@@ -576,7 +584,7 @@ pub(crate) fn monotonic(k: &Coupling, qp: f64, tol: f64, traction_tol: f64) -> R
         .last()
         .map_or((f64::NAN, f64::NAN, f64::NAN), |t| (t.2, t.3, t.4));
     Err(Error::NoConvergence(format!(
-        "exact: levels 1-8 did not agree to {tol:e} (c) and {traction_tol:e} (tractions): \
+        "exact: levels 1-{MAX_LEVEL} did not agree to {tol:e} (c) and {traction_tol:e} (tractions): \
          the last two moved c by {:e} and the tractions by {:e} (c2 = {})",
         last.1, last.2, last.0
     )))

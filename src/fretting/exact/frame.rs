@@ -1,6 +1,6 @@
 //! A contact [-1, 1] cut into zones, each with global Jacobi bases carrying the local
 //! exponents at its two ends, and the bordered least-squares solve of the whole-contact
-//! equations on it (docs/theory_tangential.md section 10):
+//! equations on it (docs/theory_tangential.md section 11):
 //!
 //! - (A) H[p](x) - bp q(x) = 0 at every collocation point;
 //! - (B) H[q](x) + bq p(x) = r(x) + sigma_0 + sigma_1 tau(x) at the stick points, r a given
@@ -29,8 +29,8 @@ pub(crate) enum Kind {
 
 /// One zone: its kind, its length, its components' exponents at the two ends ([lo, hi];
 /// q's are unused on a slip zone), and the distance beyond each end to a singular point of
-/// the solution's continuation that is no zone end (the forcing's -c beyond c2, section
-/// 11), if nearer than the neighbouring zone's far end. Every exponent list holds 0 or
+/// the solution's continuation that is no zone end (the forcing's -c beyond c2,
+/// docs/theory_tangential.md section 10), if nearer than the neighbouring zone's far end. Every exponent list holds 0 or
 /// values in (-1, 1) whose sums over the two ends exceed -1.
 #[derive(Clone, Debug)]
 pub(crate) struct ZoneSpec {
@@ -58,8 +58,9 @@ pub(crate) struct Sizes {
 }
 
 impl Sizes {
-    /// Level l = 1, 2, ...: 4 + 3 l polynomials per family, 2 + l/2 poles per decade (the
-    /// normal-load solver's density, docs/theory_spectral.md (B4)).
+    /// Level l = 1, 2, ...: 4 + 3 l polynomials per family and 2 + l/2 poles per decade,
+    /// about the normal-load solver's slip families (5 + 3 l) and its pole density
+    /// (docs/theory_spectral.md (B4)).
     pub(crate) fn at(level: usize) -> Self {
         Sizes {
             degree: 4 + 3 * level,
