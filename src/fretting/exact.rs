@@ -601,6 +601,19 @@ impl Monotonic {
         self.level.state.tractions(opx, omx)
     }
 
+    /// The moment the guided punch carries, int x p dx (per P a; docs/theory_tangential.md
+    /// section 2), by the graded rule of [`contact_rule`].
+    pub(crate) fn moment(&self) -> f64 {
+        let s = &self.level.state;
+        contact_rule(edge_exponent(&self.k), s, s)
+            .into_iter()
+            .map(|(opx, omx, w)| {
+                let x = if opx < omx { opx - 1.0 } else { 1.0 - omx };
+                w * x * s.tractions(opx, omx).0
+            })
+            .sum()
+    }
+
     /// The slip's slope relative to the punch since the normal load, per pi B P:
     /// ds/dx = -(bq p + H[q] - (bq p0 + H[q0])) (zero on the stick set).
     pub(crate) fn slip_slope(&self, opx: f64, omx: f64) -> f64 {

@@ -306,6 +306,28 @@ fn edge_panel_ratio_follows_the_lcp() {
     assert!((average(0.5 * w1) + 1.0).abs() < 1e-9);
 }
 
+/// The moment int x p the guided punch carries (section 2) against the grid LCP's at
+/// N = 100 and 200 extrapolated with order 1, at three loads on the ply.
+#[test]
+fn moment_matches_the_lcp_history() {
+    let k = ply();
+    for qp in [0.09, 0.18, 0.27] {
+        let m = monotonic(&k, qp, 1e-10, 1e-6).unwrap();
+        let grid = |n: usize| {
+            let mut h = History::new(&k, n).unwrap();
+            h.load(qp, 5).unwrap();
+            h.moment()
+        };
+        let (a, b) = (grid(100), grid(200));
+        let extrapolated = 2.0 * b - a;
+        assert!(
+            (m.moment() - extrapolated).abs() < 0.25 * (b - a).abs(),
+            "Q/P = {qp}: exact {} against the grid's {a}, {b} (extrapolated {extrapolated})",
+            m.moment()
+        );
+    }
+}
+
 /// Q/P outside (0, mu) is refused.
 #[test]
 fn loads_outside_the_partial_slip_range_are_refused() {
