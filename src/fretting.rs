@@ -35,6 +35,9 @@ use crate::problem::{Coupling, Profile, StickEdge};
 
 pub use crate::lcp::history::Zone;
 
+#[cfg_attr(not(test), allow(dead_code))]
+pub(crate) mod exact;
+
 /// How a cycle is solved; the discriminants are the C ABI's `orthoslip_cycle_method` values
 /// (append-only: an exact method will get the next value).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]

@@ -1,0 +1,614 @@
+//! A contact [-1, 1] cut into zones, each with global Jacobi bases carrying the local
+//! exponents at its two ends, and the bordered least-squares solve of the whole-contact
+//! equations on it (docs/theory_tangential.md section 11):
+//!
+//! - (A) H[p](x) - bp q(x) = 0 at every collocation point;
+//! - (B) H[q](x) + bq p(x) = r(x) + sigma_0 + sigma_1 tau(x) at the stick points, r a given
+//!   forcing and tau the stick set mapped to [-1, 1] (one or two border constants);
+//! - int p = 1, int q = Q/P, and p, q continuous at every zone boundary inside the contact,
+//!   by elimination;
+//! - on a slip zone q = s mu p (s = +-1) is built into its columns.
+//!
+//! Per zone and component, the families are the Jacobi weights (x - lo)^e_lo (hi - x)^e_hi
+//! for every pair of the zone's exponents at its two ends, each with orthonormal Jacobi
+//! polynomials and single poles beyond the nearest singular point outside each end
+//! (`spectral::basis::Block`, transforms in closed form by `numerics::jacobi_transform`).
+
+use crate::error::{Error, Result};
+use crate::numerics::jacobi_transform::{JacobiFamily, Point};
+use crate::numerics::lstsq::LeastSquares;
+use crate::problem::Coupling;
+use crate::spectral::basis::Block;
+
+/// Stick, or slip with q = s mu p.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Kind {
+    Stick,
+    Slip(f64),
+}
+
+/// One zone: its kind, its length, its components' exponents at the two ends ([lo, hi];
+/// q's are unused on a slip zone), and the distance beyond each end to a singular point of
+/// the solution's continuation that is no zone end (the forcing's -c beyond c2,
+/// docs/theory_tangential.md section 10), if nearer than the neighbouring zone's far end. Every exponent list holds 0 or
+/// values in (-1, 1) whose sums over the two ends exceed -1.
+#[derive(Clone, Debug)]
+pub(crate) struct ZoneSpec {
+    pub(crate) kind: Kind,
+    pub(crate) len: f64,
+    pub(crate) p: [Vec<f64>; 2],
+    pub(crate) q: [Vec<f64>; 2],
+    pub(crate) near: [Option<f64>; 2],
+}
+
+/// A point of zone `zone` given by its offsets from the zone's ends, each to full relative
+/// accuracy.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Loc {
+    pub(crate) zone: usize,
+    pub(crate) from_lo: f64,
+    pub(crate) to_hi: f64,
+}
+
+/// Sizes at one level: polynomials per family, poles per decade.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Sizes {
+    pub(crate) degree: usize,
+    pub(crate) per_decade: f64,
+}
+
+impl Sizes {
+    /// Level l = 1, 2, ...: 4 + 3 l polynomials per family and 2 + l/2 poles per decade,
+    /// about the normal-load solver's slip families (5 + 3 l) and its pole density
+    /// (docs/theory_spectral.md (B4)).
+    pub(crate) fn at(level: usize) -> Self {
+        Sizes {
+            degree: 4 + 3 * level,
+            per_decade: 2.0 + 0.5 * level as f64,
+        }
+    }
+}
+
+struct Zone {
+    kind: Kind,
+    len: f64,
+    /// 1 + lo and 1 - hi (offsets of the zone's ends from the contact's ends).
+    opl: f64,
+    omh: f64,
+    /// Distances beyond the ends to the nearest singular point (None at the contact's ends).
+    near: [Option<f64>; 2],
+    /// p blocks, then q blocks (stick only).
+    p: Vec<Block>,
+    q: Vec<Block>,
+    start: usize,
+    count: usize,
+}
+
+/// The zones' bases, column layout and geometry.
+pub(crate) struct Frame {
+    zones: Vec<Zone>,
+    pub(crate) k: Coupling,
+    n: usize,
+    scratch: usize,
+}
+
+fn log_spaced(lo: f64, hi: f64, n: usize) -> Vec<f64> {
+    if n == 0 {
+        return Vec::new();
+    }
+    if n == 1 {
+        return vec![(lo * hi).sqrt()];
+    }
+    (0..n)
+        .map(|i| lo * (hi / lo).powf(i as f64 / (n - 1) as f64))
+        .collect()
+}
+
+impl Frame {
+    pub(crate) fn new(k: Coupling, specs: &[ZoneSpec], sizes: Sizes) -> Self {
+        let nz = specs.len();
+        let mut opl = Vec::with_capacity(nz);
+        let mut acc = 0.0;
+        for s in specs {
+            opl.push(acc);
+            acc += s.len;
+        }
+        let mut omh = vec![0.0; nz];
+        let mut acc = 0.0;
+        for i in (0..nz).rev() {
+            omh[i] = acc;
+            acc += specs[i].len;
+        }
+        let mut zones = Vec::with_capacity(nz);
+        let mut start = 0;
+        let mut scratch = 1;
+        for (i, s) in specs.iter().enumerate() {
+            let len = s.len;
+            // poles beyond the nearest zone boundary outside each end, from a tenth of the
+            // distance to it out to the zone's length (docs/theory_spectral.md (B4))
+            let near = [
+                (i > 0).then(|| specs[i - 1].len.min(s.near[0].unwrap_or(f64::INFINITY))),
+                (i + 1 < nz).then(|| specs[i + 1].len.min(s.near[1].unwrap_or(f64::INFINITY))),
+            ];
+            let mut poles = Vec::new();
+            if let Some(d) = near[0] {
+                let n = ((len / (0.1 * d)).log10().max(0.0) * sizes.per_decade).ceil() as usize;
+                for z in log_spaced(0.1 * d, len, n) {
+                    // x = lo - d - z: t = -1 - 2 (d + z) / len
+                    let o = 2.0 * (d + z) / len;
+                    poles.push(Point::offsets(2.0 + o, -o));
+                }
+            }
+            if let Some(d) = near[1] {
+                let n = ((len / (0.1 * d)).log10().max(0.0) * sizes.per_decade).ceil() as usize;
+                for z in log_spaced(0.1 * d, len, n) {
+                    let o = 2.0 * (d + z) / len;
+                    poles.push(Point::offsets(-o, 2.0 + o));
+                }
+            }
+            let blocks = |ends: &[Vec<f64>; 2]| -> Vec<Block> {
+                let mut out = Vec::new();
+                for &b in &ends[0] {
+                    for &a in &ends[1] {
+                        let f = JacobiFamily::new(a, b, sizes.degree);
+                        out.push(Block::new(f, (0..sizes.degree).collect(), &poles, 0.0));
+                    }
+                }
+                out
+            };
+            let p = blocks(&s.p);
+            let q = if s.kind == Kind::Stick {
+                blocks(&s.q)
+            } else {
+                Vec::new()
+            };
+            let count: usize = p.iter().chain(&q).map(Block::len).sum();
+            scratch = scratch.max(p.iter().chain(&q).map(Block::scratch).max().unwrap_or(1));
+            zones.push(Zone {
+                kind: s.kind,
+                len,
+                opl: opl[i],
+                omh: omh[i],
+                near,
+                p,
+                q,
+                start,
+                count,
+            });
+            start += count;
+        }
+        Frame {
+            zones,
+            k,
+            n: start,
+            scratch: scratch.max(start),
+        }
+    }
+
+    /// Number of basis columns.
+    pub(crate) fn len(&self) -> usize {
+        self.n
+    }
+
+    pub(crate) fn zone_count(&self) -> usize {
+        self.zones.len()
+    }
+
+    pub(crate) fn zone_len(&self, i: usize) -> f64 {
+        self.zones[i].len
+    }
+
+    pub(crate) fn is_stick(&self, i: usize) -> bool {
+        self.zones[i].kind == Kind::Stick
+    }
+
+    /// (1 + x, 1 - x) of a point.
+    pub(crate) fn offsets(&self, l: &Loc) -> (f64, f64) {
+        let z = &self.zones[l.zone];
+        (z.opl + l.from_lo, z.omh + l.to_hi)
+    }
+
+    /// The point at x (given with 1 + x and 1 - x), strictly inside a zone.
+    pub(crate) fn locate(&self, opx: f64, omx: f64) -> Loc {
+        let i = self
+            .zones
+            .iter()
+            .position(|z| opx < z.opl + z.len)
+            .unwrap_or(self.zones.len() - 1);
+        let z = &self.zones[i];
+        let (from_lo, to_hi) = if z.opl <= z.omh {
+            (opx - z.opl, z.len - (opx - z.opl))
+        } else {
+            (z.len - (omx - z.omh), omx - z.omh)
+        };
+        // a point within rounding of a zone end is taken at that end
+        Loc {
+            zone: i,
+            from_lo: from_lo.max(0.0),
+            to_hi: to_hi.max(0.0),
+        }
+    }
+
+    /// The point mapped to zone j's variable t in [-1, 1] (outside for other zones).
+    fn mapped(&self, l: &Loc, j: usize) -> Point {
+        let i = l.zone;
+        let len = self.zones[j].len;
+        let (xlo, hix) = if i == j {
+            (l.from_lo, l.to_hi)
+        } else if j < i {
+            let between: f64 = self.zones[j + 1..i].iter().map(|z| z.len).sum();
+            (l.from_lo + between + len, -(l.from_lo + between))
+        } else {
+            let between: f64 = self.zones[i + 1..j].iter().map(|z| z.len).sum();
+            (-(l.to_hi + between), l.to_hi + between + len)
+        };
+        Point::offsets(2.0 * hix / len, 2.0 * xlo / len)
+    }
+
+    /// The columns' p and q at a point of its zone (a zone end included, where no exponent
+    /// there is negative).
+    pub(crate) fn values(&self, l: &Loc, pv: &mut [f64], qv: &mut [f64], buf: &mut [f64]) {
+        pv.fill(0.0);
+        qv.fill(0.0);
+        let z = &self.zones[l.zone];
+        let t = self.mapped(l, l.zone);
+        let mut at = z.start;
+        for b in &z.p {
+            let n = b.len();
+            b.values(t, buf, &mut pv[at..at + n]);
+            if let Kind::Slip(s) = z.kind {
+                for j in at..at + n {
+                    qv[j] = s * self.k.mu * pv[j];
+                }
+            }
+            at += n;
+        }
+        for b in &z.q {
+            let n = b.len();
+            b.values(t, buf, &mut qv[at..at + n]);
+            at += n;
+        }
+    }
+
+    /// The columns' H[p] and H[q] at a point (off the zone ends).
+    pub(crate) fn hilbert(&self, l: &Loc, hp: &mut [f64], hq: &mut [f64], buf: &mut [f64]) {
+        hp.fill(0.0);
+        hq.fill(0.0);
+        for (j, z) in self.zones.iter().enumerate() {
+            let t = self.mapped(l, j);
+            let mut at = z.start;
+            for b in &z.p {
+                let n = b.len();
+                b.transforms(t, buf, &mut hp[at..at + n]);
+                for v in &mut hp[at..at + n] {
+                    *v = -*v;
+                }
+                if let Kind::Slip(s) = z.kind {
+                    for jj in at..at + n {
+                        hq[jj] = s * self.k.mu * hp[jj];
+                    }
+                }
+                at += n;
+            }
+            for b in &z.q {
+                let n = b.len();
+                b.transforms(t, buf, &mut hq[at..at + n]);
+                for v in &mut hq[at..at + n] {
+                    *v = -*v;
+                }
+                at += n;
+            }
+        }
+    }
+
+    /// int p and int q of each column.
+    pub(crate) fn integrals(&self) -> (Vec<f64>, Vec<f64>) {
+        let (mut ip, mut iq) = (vec![0.0; self.n], vec![0.0; self.n]);
+        for z in &self.zones {
+            let mut at = z.start;
+            for b in &z.p {
+                let n = b.len();
+                b.integrals(&mut ip[at..at + n]);
+                for j in at..at + n {
+                    ip[j] *= 0.5 * z.len;
+                    if let Kind::Slip(s) = z.kind {
+                        iq[j] = s * self.k.mu * ip[j];
+                    }
+                }
+                at += n;
+            }
+            for b in &z.q {
+                let n = b.len();
+                b.integrals(&mut iq[at..at + n]);
+                for v in &mut iq[at..at + n] {
+                    *v *= 0.5 * z.len;
+                }
+                at += n;
+            }
+        }
+        (ip, iq)
+    }
+
+    pub(crate) fn scratch_len(&self) -> usize {
+        self.scratch
+    }
+
+    /// Collocation points: `per_col` Chebyshev points per column of each zone, and points
+    /// spaced geometrically (`per_decade` per decade) towards each end from a tenth of the
+    /// zone, down to 1e-6 of it at the contact's ends and to a hundredth of the distance to
+    /// the nearest singular point beyond (at most 1e-3) at the others.
+    pub(crate) fn collocation(&self, per_col: f64, per_decade: f64) -> Vec<Loc> {
+        let mut out = Vec::new();
+        for (i, z) in self.zones.iter().enumerate() {
+            let m = (per_col * z.count as f64).ceil().max(4.0) as usize;
+            for k in 0..m {
+                let th = (k as f64 + 0.5) * std::f64::consts::PI / m as f64;
+                let (a, b) = ((0.5 * th).sin().powi(2), (0.5 * th).cos().powi(2));
+                out.push(Loc {
+                    zone: i,
+                    from_lo: z.len * a,
+                    to_hi: z.len * b,
+                });
+            }
+            for (near, lo_end) in [(z.near[0], true), (z.near[1], false)] {
+                let d = match near {
+                    None => 1e-6,
+                    Some(d) => (1e-2 * d / z.len).min(1e-3),
+                };
+                let n = ((0.1 / d).log10() * per_decade).ceil().max(1.0) as usize;
+                for k in 0..=n {
+                    let f = 0.1 * (d / 0.1).powf(k as f64 / n as f64);
+                    let (from_lo, to_hi) = if lo_end {
+                        (z.len * f, z.len * (1.0 - f))
+                    } else {
+                        (z.len * (1.0 - f), z.len * f)
+                    };
+                    out.push(Loc {
+                        zone: i,
+                        from_lo,
+                        to_hi,
+                    });
+                }
+            }
+        }
+        out
+    }
+}
+
+/// Chebyshev points per column of a zone: with two rows per stick point and one per slip
+/// point, 2 .. 2.6 rows per unknown, the normal-load solver's 2.6 (docs/theory_spectral.md
+/// (C1)). At the ply (Q/P = 0.18, fixed geometry) 2.0 instead of 1.3 changed the distance
+/// to level 10 by less than its scatter between levels (1e-7, the frame's noise floor there).
+const POINTS_PER_COLUMN: f64 = 1.3;
+
+/// Clustered points per decade towards a zone end, per pole per decade: more rows than pole
+/// columns over every decade the poles span, so that no decade is fitted by fewer equations
+/// than it has unknowns.
+const CLUSTER_DENSITY: f64 = 1.5;
+
+/// A fixed-geometry solve.
+pub(crate) struct Solved {
+    pub(crate) frame: Frame,
+    pub(crate) coef: Vec<f64>,
+    /// The border constants (zero at the exact stick-slip points).
+    pub(crate) sigma: Vec<f64>,
+    /// The largest weighted residual of (A) and (B) at the collocation points, relative to
+    /// the largest term of its row.
+    pub(crate) residual: f64,
+}
+
+/// Solves (A), (B) with `n_sigma` (1 or 2) border constants, the forcing `r` (a function of
+/// (1 + x, 1 - x)) and int q = `qp`.
+pub(crate) fn solve(
+    k: Coupling,
+    specs: &[ZoneSpec],
+    sizes: Sizes,
+    n_sigma: usize,
+    qp: f64,
+    r: &dyn Fn(f64, f64) -> f64,
+) -> Result<Solved> {
+    let frame = Frame::new(k, specs, sizes);
+    let n = frame.len();
+    let cols = n + n_sigma;
+    let pts = frame.collocation(POINTS_PER_COLUMN, CLUSTER_DENSITY * sizes.per_decade);
+    // the stick set [lo, hi] as offsets (1 + lo, 1 - hi)
+    let stick = {
+        let first = (0..frame.zone_count()).find(|&i| frame.is_stick(i));
+        let last = (0..frame.zone_count()).rev().find(|&i| frame.is_stick(i));
+        match (first, last) {
+            (Some(a), Some(b)) => (frame.zones[a].opl, frame.zones[b].omh),
+            _ => (0.0, 0.0),
+        }
+    };
+    let g = 0.5 - (k.bp * k.mu).atan() / std::f64::consts::PI;
+    let mut rows: Vec<Vec<f64>> = Vec::new();
+    let mut rhs = Vec::new();
+    let (mut pv, mut qv, mut hp, mut hq) = (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+    let mut buf = vec![0.0; frame.scratch_len()];
+    for l in &pts {
+        frame.values(l, &mut pv, &mut qv, &mut buf);
+        frame.hilbert(l, &mut hp, &mut hq, &mut buf);
+        let (opx, omx) = frame.offsets(l);
+        let w = (opx * omx).powf(g);
+        let mut row = vec![0.0; cols];
+        for j in 0..n {
+            row[j] = w * (hp[j] - k.bp * qv[j]);
+        }
+        rows.push(row);
+        rhs.push(0.0);
+        if frame.is_stick(l.zone) {
+            let mut row = vec![0.0; cols];
+            for j in 0..n {
+                row[j] = w * (hq[j] + k.bq * pv[j]);
+            }
+            row[n] = -w;
+            if n_sigma > 1 {
+                let tau = (opx - stick.0 - (omx - stick.1)) / (2.0 - stick.0 - stick.1);
+                row[n + 1] = -w * tau;
+            }
+            rows.push(row);
+            rhs.push(w * r(opx, omx));
+        }
+    }
+    // column scales
+    let mut scale = vec![0.0; cols];
+    for row in &rows {
+        for (s, v) in scale.iter_mut().zip(row) {
+            *s += v * v;
+        }
+    }
+    for s in &mut scale {
+        *s = if *s > 0.0 { 1.0 / s.sqrt() } else { 1.0 };
+    }
+    for row in &mut rows {
+        for (v, s) in row.iter_mut().zip(&scale) {
+            *v *= s;
+        }
+    }
+    // constraints
+    let (ip, iq) = frame.integrals();
+    let mut cons: Vec<(Vec<f64>, f64)> = vec![(ip, 1.0), (iq, qp)];
+    let (mut p1, mut q1) = (vec![0.0; n], vec![0.0; n]);
+    for i in 0..frame.zone_count() - 1 {
+        let a = Loc {
+            zone: i,
+            from_lo: frame.zones[i].len,
+            to_hi: 0.0,
+        };
+        let b = Loc {
+            zone: i + 1,
+            from_lo: 0.0,
+            to_hi: frame.zones[i + 1].len,
+        };
+        frame.values(&a, &mut pv, &mut qv, &mut buf);
+        frame.values(&b, &mut p1, &mut q1, &mut buf);
+        cons.push(((0..n).map(|j| pv[j] - p1[j]).collect(), 0.0));
+        cons.push(((0..n).map(|j| qv[j] - q1[j]).collect(), 0.0));
+    }
+    let mut cons: Vec<(Vec<f64>, f64)> = cons
+        .into_iter()
+        .map(|(row, d)| {
+            let mut row: Vec<f64> = row.iter().zip(&scale).map(|(v, s)| v * s).collect();
+            row.resize(cols, 0.0);
+            (row, d)
+        })
+        .collect();
+    let mut pivots: Vec<usize> = Vec::new();
+    for i in 0..cons.len() {
+        let j = (0..n)
+            .filter(|j| !pivots.contains(j))
+            .max_by(|&a, &b| cons[i].0[a].abs().total_cmp(&cons[i].0[b].abs()))
+            .unwrap_or(0);
+        let piv = cons[i].0[j];
+        if piv == 0.0 || !piv.is_finite() {
+            return Err(Error::NoConvergence(
+                "exact: dependent constraints".to_string(),
+            ));
+        }
+        for v in &mut cons[i].0 {
+            *v /= piv;
+        }
+        cons[i].1 /= piv;
+        let (row, d) = cons[i].clone();
+        for (i2, (other, od)) in cons.iter_mut().enumerate() {
+            if i2 != i {
+                let f = other[j];
+                for (o, r) in other.iter_mut().zip(&row) {
+                    *o -= f * r;
+                }
+                *od -= f * d;
+            }
+        }
+        pivots.push(j);
+    }
+    let keep: Vec<usize> = (0..cols).filter(|j| !pivots.contains(j)).collect();
+    let m = keep.len();
+    let nr = rows.len();
+    let mut reduced = vec![0.0; nr * m];
+    let mut b = vec![0.0; nr];
+    for (i, row) in rows.iter().enumerate() {
+        for (jj, &j) in keep.iter().enumerate() {
+            reduced[i * m + jj] = row[j]
+                - pivots
+                    .iter()
+                    .zip(&cons)
+                    .map(|(&pj, (kr, _))| row[pj] * kr[j])
+                    .sum::<f64>();
+        }
+        b[i] = rhs[i]
+            - pivots
+                .iter()
+                .zip(&cons)
+                .map(|(&pj, (_, d))| row[pj] * d)
+                .sum::<f64>();
+    }
+    let x = LeastSquares::pivoted().solve(&reduced, m, &b);
+    if x.iter().any(|v| !v.is_finite()) {
+        return Err(Error::NoConvergence(
+            "exact: least-squares solution not finite".to_string(),
+        ));
+    }
+    let mut full = vec![0.0; cols];
+    for (jj, &j) in keep.iter().enumerate() {
+        full[j] = x[jj];
+    }
+    for (&pj, (kr, d)) in pivots.iter().zip(&cons) {
+        full[pj] = d - keep.iter().map(|&j| kr[j] * full[j]).sum::<f64>();
+    }
+    let mut residual = 0.0f64;
+    for (row, r) in rows.iter().zip(&rhs) {
+        let res: f64 = row.iter().zip(&full).map(|(a, x)| a * x).sum::<f64>() - r;
+        let size: f64 = row
+            .iter()
+            .zip(&full)
+            .map(|(a, x)| (a * x).abs())
+            .fold(0.0, f64::max)
+            .max(r.abs());
+        if size > 0.0 {
+            residual = residual.max(res.abs() / size);
+        }
+    }
+    let coef: Vec<f64> = (0..n).map(|j| full[j] * scale[j]).collect();
+    let sigma: Vec<f64> = (n..cols).map(|j| full[j] * scale[j]).collect();
+    Ok(Solved {
+        frame,
+        coef,
+        sigma,
+        residual,
+    })
+}
+
+impl Solved {
+    /// (p, q) at a point.
+    pub(crate) fn tractions_at(&self, l: &Loc) -> (f64, f64) {
+        let n = self.frame.len();
+        let (mut pv, mut qv) = (vec![0.0; n], vec![0.0; n]);
+        let mut buf = vec![0.0; self.frame.scratch_len()];
+        self.frame.values(l, &mut pv, &mut qv, &mut buf);
+        let dot = |v: &[f64]| v.iter().zip(&self.coef).map(|(a, b)| a * b).sum::<f64>();
+        (dot(&pv), dot(&qv))
+    }
+
+    /// (H[p], H[q]) at a point off the zone ends.
+    pub(crate) fn hilbert_at(&self, l: &Loc) -> (f64, f64) {
+        let n = self.frame.len();
+        let (mut hp, mut hq) = (vec![0.0; n], vec![0.0; n]);
+        let mut buf = vec![0.0; self.frame.scratch_len()];
+        self.frame.hilbert(l, &mut hp, &mut hq, &mut buf);
+        let dot = |v: &[f64]| v.iter().zip(&self.coef).map(|(a, b)| a * b).sum::<f64>();
+        (dot(&hp), dot(&hq))
+    }
+
+    /// (p, q) at x given by (1 + x, 1 - x).
+    pub(crate) fn tractions(&self, opx: f64, omx: f64) -> (f64, f64) {
+        self.tractions_at(&self.frame.locate(opx, omx))
+    }
+
+    /// int p and int q.
+    #[cfg(test)]
+    pub(crate) fn forces(&self) -> (f64, f64) {
+        let (ip, iq) = self.frame.integrals();
+        let dot = |v: &[f64]| v.iter().zip(&self.coef).map(|(a, b)| a * b).sum::<f64>();
+        (dot(&ip), dot(&iq))
+    }
+}
