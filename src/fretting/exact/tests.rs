@@ -350,10 +350,23 @@ fn lcp_sequence_at_strong_coupling() {
         bq: 0.9,
         mu: 1.0,
     };
+    let m = monotonic(&k, 0.3, 1e-10, 1e-8).unwrap();
+    let (w1, c2) = m.stick_set();
+    let c1 = w1 - 1.0;
+    // the grid's stick set approaches the exact one at every doubling of N (its c1 slowly,
+    // docs/theory_tangential.md section 12)
+    let mut prev = (f64::INFINITY, f64::INFINITY);
     for n in [100, 200, 400, 800] {
         let mut h = History::new(&k, n).unwrap();
         h.load(0.3, 5).unwrap();
-        println!("N = {n}: stick set {:?}", h.state().stick);
+        let (g1, g2) = h.state().stick;
+        println!("N = {n}: stick set ({g1}, {g2}), exact ({c1}, {c2})");
+        let d = ((g1 - c1).abs(), (g2 - c2).abs());
+        assert!(
+            d.0 < prev.0 && d.1 < prev.1,
+            "N = {n}: the grid's stick set ({g1}, {g2}) is no nearer the exact ({c1}, {c2})"
+        );
+        prev = d;
     }
 }
 
@@ -466,6 +479,15 @@ fn measure_monotonic() {
             let t = std::time::Instant::now();
             let r = monotonic(k, *qp, tol_c, tol_t);
             let el = t.elapsed();
+            if let Ok(m) = &r {
+                // whatever answers meets the tolerances asked for, by its own estimates
+                assert!(
+                    m.c_error <= tol_c && m.traction_error <= tol_t,
+                    "{name} Q/P {qp}: estimates ({:e}, {:e}) above ({tol_c:e}, {tol_t:e})",
+                    m.c_error,
+                    m.traction_error
+                );
+            }
             match r {
                 Ok(m) => println!(
                     "{name} Q/P {qp} tol ({tol_c:e}, {tol_t:e}): c = {:.6} c1 = {:.12} (w1 {:.4e}) \
