@@ -56,3 +56,88 @@ impl LeastSquares {
         (0..n).map(|i| x[(i, 0)]).collect()
     }
 }
+
+/// Why [`constrained`] gave no solution.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum ConstrainedFailure {
+    /// A constraint is zero (or not finite) on every column still free to pivot on.
+    DependentConstraints,
+    /// The least-squares solution of the reduced system is not finite.
+    NotFinite,
+}
+
+/// x minimising ||A x - b|| subject to a few exact constraints c_i . x = d_i, by elimination:
+/// Gauss-Jordan on the constraints, each pivot the largest entry left in its row among the
+/// first `pivot_cols` columns; those columns eliminated from A; the reduced least squares by
+/// the column-pivoted QR ([`LeastSquares::pivoted`], for frames whose columns are
+/// near-dependent by design); then the eliminated coefficients from the constraints. A is
+/// row-major with `cols` columns, each constraint row of length `cols`.
+pub(crate) fn constrained(
+    a: &[f64],
+    cols: usize,
+    b: &[f64],
+    mut cons: Vec<(Vec<f64>, f64)>,
+    pivot_cols: usize,
+) -> Result<Vec<f64>, ConstrainedFailure> {
+    let mut pivots: Vec<usize> = Vec::new();
+    for i in 0..cons.len() {
+        let row = &cons[i].0;
+        let j = (0..pivot_cols)
+            .filter(|j| !pivots.contains(j))
+            .max_by(|&p, &q| row[p].abs().total_cmp(&row[q].abs()))
+            .unwrap_or(0);
+        let piv = cons[i].0[j];
+        if piv == 0.0 || !piv.is_finite() {
+            return Err(ConstrainedFailure::DependentConstraints);
+        }
+        for v in &mut cons[i].0 {
+            *v /= piv;
+        }
+        cons[i].1 /= piv;
+        let (row, d) = cons[i].clone();
+        for (i2, (other, od)) in cons.iter_mut().enumerate() {
+            if i2 != i {
+                let f = other[j];
+                for (o, r) in other.iter_mut().zip(&row) {
+                    *o -= f * r;
+                }
+                *od -= f * d;
+            }
+        }
+        pivots.push(j);
+    }
+    let keep: Vec<usize> = (0..cols).filter(|j| !pivots.contains(j)).collect();
+    let m = keep.len();
+    let rows = b.len();
+    let mut reduced = vec![0.0; rows * m];
+    let mut rhs = vec![0.0; rows];
+    for i in 0..rows {
+        let row = &a[i * cols..(i + 1) * cols];
+        for (jj, &j) in keep.iter().enumerate() {
+            reduced[i * m + jj] = row[j]
+                - pivots
+                    .iter()
+                    .zip(&cons)
+                    .map(|(&pj, (k, _))| row[pj] * k[j])
+                    .sum::<f64>();
+        }
+        rhs[i] = b[i]
+            - pivots
+                .iter()
+                .zip(&cons)
+                .map(|(&pj, (_, d))| row[pj] * d)
+                .sum::<f64>();
+    }
+    let x = LeastSquares::pivoted().solve(&reduced, m, &rhs);
+    if x.iter().any(|v| !v.is_finite()) {
+        return Err(ConstrainedFailure::NotFinite);
+    }
+    let mut full = vec![0.0; cols];
+    for (jj, &j) in keep.iter().enumerate() {
+        full[j] = x[jj];
+    }
+    for (&pj, (k, d)) in pivots.iter().zip(&cons) {
+        full[pj] = d - keep.iter().map(|&j| k[j] * full[j]).sum::<f64>();
+    }
+    Ok(full)
+}

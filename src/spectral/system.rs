@@ -14,7 +14,7 @@
 
 use crate::error::{Error, Result};
 use crate::numerics::jacobi_transform::{JacobiFamily, Point};
-use crate::numerics::lstsq::LeastSquares;
+use crate::numerics::lstsq::{ConstrainedFailure, constrained};
 
 use super::basis::{Block, parity};
 use super::points::{Pt, collocation};
@@ -376,7 +376,7 @@ pub(crate) fn solve_fixed(k: Constants, c: f64, w: f64, sizes: Sizes) -> Result<
     basis.tractions_row(&at_c(-f64::MIN_POSITIVE), &mut ps, &mut qs, &mut scratch);
     basis.tractions_row(&at_c(0.0), &mut pc, &mut qc, &mut scratch);
     let integral = basis.integrals();
-    let mut cons: Vec<(Vec<f64>, f64)> = [
+    let cons: Vec<(Vec<f64>, f64)> = [
         (integral, 1.0),
         ((0..n).map(|j| ps[j] - pc[j]).collect(), 0.0),
         ((0..n).map(|j| qs[j] - qc[j]).collect(), 0.0),
@@ -388,72 +388,19 @@ pub(crate) fn solve_fixed(k: Constants, c: f64, w: f64, sizes: Sizes) -> Result<
         (row, d)
     })
     .collect();
-    // Gauss-Jordan on the constraints, each pivot the largest entry left in its row
-    let mut pivots = Vec::new();
-    for i in 0..cons.len() {
-        let (row, _) = &cons[i];
-        let j = (0..n)
-            .filter(|j| !pivots.contains(j))
-            .max_by(|&a, &b| row[a].abs().total_cmp(&row[b].abs()))
-            .unwrap_or(0);
-        let piv = cons[i].0[j];
-        if piv == 0.0 {
-            return Err(Error::NoConvergence(format!(
-                "spectral: dependent constraints at c = {c}"
-            )));
-        }
-        for v in &mut cons[i].0 {
-            *v /= piv;
-        }
-        cons[i].1 /= piv;
-        let (row, d) = cons[i].clone();
-        for (k2, (other, od)) in cons.iter_mut().enumerate() {
-            if k2 != i {
-                let f = other[j];
-                for (o, r) in other.iter_mut().zip(&row) {
-                    *o -= f * r;
-                }
-                *od -= f * d;
-            }
-        }
-        pivots.push(j);
-    }
-    let keep: Vec<usize> = (0..cols).filter(|j| !pivots.contains(j)).collect();
-    let m = keep.len();
-    let mut reduced = vec![0.0; rows * m];
-    let mut rhs = vec![0.0; rows];
-    for i in 0..rows {
-        let row = &a[i * cols..(i + 1) * cols];
-        for (jj, &j) in keep.iter().enumerate() {
-            reduced[i * m + jj] = row[j]
-                - pivots
-                    .iter()
-                    .zip(&cons)
-                    .map(|(&pj, (k, _))| row[pj] * k[j])
-                    .sum::<f64>();
-        }
-        rhs[i] = -pivots
-            .iter()
-            .zip(&cons)
-            .map(|(&pj, (_, d))| row[pj] * d)
-            .sum::<f64>();
-    }
     // the frame is ill-conditioned (near-dependent columns by design: cond 1e15 and more);
     // Householder QR without pivoting spreads their rounding over every coefficient (the
     // mid-range scenes of the tests lost c at 1e-8 that way), so the pivoted QR at once
-    let x = LeastSquares::pivoted().solve(&reduced, m, &rhs);
-    if x.iter().any(|v| !v.is_finite()) {
-        return Err(Error::NoConvergence(format!(
-            "spectral: least-squares solution not finite at c = {c}"
-        )));
-    }
-    let mut full = vec![0.0; cols];
-    for (jj, &j) in keep.iter().enumerate() {
-        full[j] = x[jj];
-    }
-    for (&pj, (k, d)) in pivots.iter().zip(&cons) {
-        full[pj] = d - keep.iter().map(|&j| k[j] * full[j]).sum::<f64>();
-    }
+    let full = constrained(&a, cols, &vec![0.0; rows], cons, n).map_err(|e| {
+        Error::NoConvergence(match e {
+            ConstrainedFailure::DependentConstraints => {
+                format!("spectral: dependent constraints at c = {c}")
+            }
+            ConstrainedFailure::NotFinite => {
+                format!("spectral: least-squares solution not finite at c = {c}")
+            }
+        })
+    })?;
     let coef: Vec<f64> = (0..n).map(|j| full[j] * scale[j]).collect();
     let sigma = full[n] * scale[n];
     let mut fixed = Fixed {

@@ -16,7 +16,7 @@
 
 use crate::error::{Error, Result};
 use crate::numerics::jacobi_transform::{JacobiFamily, Point};
-use crate::numerics::lstsq::LeastSquares;
+use crate::numerics::lstsq::{ConstrainedFailure, constrained};
 use crate::problem::Coupling;
 use crate::spectral::basis::Block;
 
@@ -485,7 +485,7 @@ pub(crate) fn solve(
         cons.push(((0..n).map(|j| pv[j] - p1[j]).collect(), 0.0));
         cons.push(((0..n).map(|j| qv[j] - q1[j]).collect(), 0.0));
     }
-    let mut cons: Vec<(Vec<f64>, f64)> = cons
+    let cons: Vec<(Vec<f64>, f64)> = cons
         .into_iter()
         .map(|(row, d)| {
             let mut row: Vec<f64> = row.iter().zip(&scale).map(|(v, s)| v * s).collect();
@@ -493,68 +493,15 @@ pub(crate) fn solve(
             (row, d)
         })
         .collect();
-    let mut pivots: Vec<usize> = Vec::new();
-    for i in 0..cons.len() {
-        let j = (0..n)
-            .filter(|j| !pivots.contains(j))
-            .max_by(|&a, &b| cons[i].0[a].abs().total_cmp(&cons[i].0[b].abs()))
-            .unwrap_or(0);
-        let piv = cons[i].0[j];
-        if piv == 0.0 || !piv.is_finite() {
-            return Err(Error::NoConvergence(
-                "exact: dependent constraints".to_string(),
-            ));
-        }
-        for v in &mut cons[i].0 {
-            *v /= piv;
-        }
-        cons[i].1 /= piv;
-        let (row, d) = cons[i].clone();
-        for (i2, (other, od)) in cons.iter_mut().enumerate() {
-            if i2 != i {
-                let f = other[j];
-                for (o, r) in other.iter_mut().zip(&row) {
-                    *o -= f * r;
-                }
-                *od -= f * d;
+    let full = constrained(&rows.concat(), cols, &rhs, cons, n).map_err(|e| {
+        Error::NoConvergence(
+            match e {
+                ConstrainedFailure::DependentConstraints => "exact: dependent constraints",
+                ConstrainedFailure::NotFinite => "exact: least-squares solution not finite",
             }
-        }
-        pivots.push(j);
-    }
-    let keep: Vec<usize> = (0..cols).filter(|j| !pivots.contains(j)).collect();
-    let m = keep.len();
-    let nr = rows.len();
-    let mut reduced = vec![0.0; nr * m];
-    let mut b = vec![0.0; nr];
-    for (i, row) in rows.iter().enumerate() {
-        for (jj, &j) in keep.iter().enumerate() {
-            reduced[i * m + jj] = row[j]
-                - pivots
-                    .iter()
-                    .zip(&cons)
-                    .map(|(&pj, (kr, _))| row[pj] * kr[j])
-                    .sum::<f64>();
-        }
-        b[i] = rhs[i]
-            - pivots
-                .iter()
-                .zip(&cons)
-                .map(|(&pj, (_, d))| row[pj] * d)
-                .sum::<f64>();
-    }
-    let x = LeastSquares::pivoted().solve(&reduced, m, &b);
-    if x.iter().any(|v| !v.is_finite()) {
-        return Err(Error::NoConvergence(
-            "exact: least-squares solution not finite".to_string(),
-        ));
-    }
-    let mut full = vec![0.0; cols];
-    for (jj, &j) in keep.iter().enumerate() {
-        full[j] = x[jj];
-    }
-    for (&pj, (kr, d)) in pivots.iter().zip(&cons) {
-        full[pj] = d - keep.iter().map(|&j| kr[j] * full[j]).sum::<f64>();
-    }
+            .to_string(),
+        )
+    })?;
     let mut residual = 0.0f64;
     for (row, r) in rows.iter().zip(&rhs) {
         let res: f64 = row.iter().zip(&full).map(|(a, x)| a * x).sum::<f64>() - r;
