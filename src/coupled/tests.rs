@@ -832,16 +832,7 @@ fn spectral_agrees_with_the_panels() {
 #[test]
 #[ignore = "slow tier: 600 points, each solved by both solvers"]
 fn spectral_agrees_with_the_panels_on_a_grid() {
-    let patches = crate::stick_edge_table::patches();
-    let span = |f: fn(&crate::stick_edge_table::Patch) -> [f64; 2]| {
-        patches
-            .iter()
-            .map(f)
-            .fold([f64::INFINITY, 0.0f64], |[lo, hi], r| {
-                [lo.min(r[0]), hi.max(r[1])]
-            })
-    };
-    let ([lo_b, hi_b], [lo_z, hi_z]) = (span(|p| p.beta), span(|p| p.zeta));
+    let ([lo_b, hi_b], [lo_z, hi_z]) = crate::stick_edge_table::extent();
     let grid = 53;
     let (mut spectral_ms, mut panels_ms) = (Vec::new(), Vec::new());
     let mut unanswered = 0;

@@ -184,16 +184,7 @@ fn newton_ladder_moves_to_the_root() {
 /// zones served, measured as [`First::measured`] measures them.
 #[test]
 fn sensitivity_bounds_hold() {
-    let patches = crate::stick_edge_table::patches();
-    let span = |f: fn(&crate::stick_edge_table::Patch) -> [f64; 2]| {
-        patches
-            .iter()
-            .map(f)
-            .fold([f64::INFINITY, 0.0f64], |[lo, hi], r| {
-                [lo.min(r[0]), hi.max(r[1])]
-            })
-    };
-    let ([lo_b, hi_b], [lo_z, hi_z]) = (span(|p| p.beta), span(|p| p.zeta));
+    let ([lo_b, hi_b], [lo_z, hi_z]) = crate::stick_edge_table::extent();
     let grid = 37;
     let mut scenes: Vec<(f64, f64)> = (0..grid * grid)
         .map(|n| {

@@ -58,6 +58,19 @@ pub fn patches() -> &'static [Patch] {
     table::PATCHES
 }
 
+/// The rectangle of (beta, zeta) the patches span together.
+pub fn extent() -> ([f64; 2], [f64; 2]) {
+    let span = |f: fn(&Patch) -> [f64; 2]| {
+        patches()
+            .iter()
+            .map(f)
+            .fold([f64::INFINITY, f64::NEG_INFINITY], |[lo, hi], r| {
+                [lo.min(r[0]), hi.max(r[1])]
+            })
+    };
+    (span(|p| p.beta), span(|p| p.zeta))
+}
+
 /// mu_lo(b*): where the full-slip law gives c = [`C_LO`], pi L / (2 b* ln(4 / C_LO)) with
 /// L = -ln(1 - b*^2).
 fn mu_lo(b: f64) -> f64 {
