@@ -91,17 +91,8 @@ fn residuals_off_the_collocation_points() {
 /// bound plus its own estimate. Returns (answered, tried, the largest distance from the table
 /// over the bound plus the estimate); `grid` points per coordinate over the patches' extent.
 fn sweep(grid: usize) -> (usize, usize, f64) {
-    let patches = crate::stick_edge_table::patches();
-    let lo_b = patches
-        .iter()
-        .map(|p| p.beta[0])
-        .fold(f64::INFINITY, f64::min);
-    let hi_b = patches.iter().map(|p| p.beta[1]).fold(0.0, f64::max);
-    let lo_z = patches
-        .iter()
-        .map(|p| p.zeta[0])
-        .fold(f64::INFINITY, f64::min);
-    let hi_z = patches.iter().map(|p| p.zeta[1]).fold(0.0, f64::max);
+    // the patches' extent; its points outside every patch are left out (lookup is None)
+    let ([lo_b, hi_b], [lo_z, hi_z]) = crate::stick_edge_table::extent();
     let (mut answered, mut tried, mut worst) = (0, 0, 0.0f64);
     for i in 0..grid {
         for j in 0..grid {
