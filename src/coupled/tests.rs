@@ -882,8 +882,8 @@ fn spectral_agrees_with_the_panels_on_a_grid() {
 }
 
 /// Below b* = 0.25 the table's strips ([`crate::stick_edge_table`]) cover these 6 scenes
-/// (b* = 0.02 .. 0.24, from a tiny stick zone, c = 4.5e-5, to thin slip zones,
-/// 1 - c = 7e-5): COUPLED's spectral answer starts from the tabulated stick edge, and the
+/// (b* = 0.02 .. 0.24, from a tiny stick zone, c = 4.4e-5, to thin slip zones,
+/// 1 - c = 1.2e-4): COUPLED's spectral answer starts from the tabulated stick edge, and the
 /// spectral solver from Spence's stick edge ([`crate::spectral::from_guess`], the start
 /// outside the table) answers too; both agree with the panels (an independent
 /// discretisation): c and the tractions within the sum of both estimates.

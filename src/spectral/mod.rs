@@ -195,7 +195,7 @@ const GUESS_B_MIN: f64 = 0.02;
 
 /// Most level-1 steps of [`from_guess`]: from Spence's stick edge at the 6 scenes of
 /// `coupled::tests::spectral_agrees_with_the_panels_from_the_table_below` (b* = 0.02 .. 0.24,
-/// c = 4.5e-5 .. 1 - 1.2e-4) the search took 2-4 before level 1's rounding stopped it; more
+/// c = 4.4e-5 .. 1 - 1.2e-4) the search took 2-4 before level 1's rounding stopped it; more
 /// means it is not converging and the panels answer.
 const GUESS_STEPS: usize = 10;
 

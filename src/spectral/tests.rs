@@ -185,8 +185,11 @@ fn sensitivity_bounds_hold() {
             crate::stick_edge_table::coupling_at(beta, zeta)
         })
         .collect();
-    // the smallest stick zones served (c = 4.2e-5 .. 9e-5)
+    // the smallest stick zones served (c = 4.2e-5 .. 9e-5), and the smallest b* of the table
+    // at its smallest stick zone served and near its top
     scenes.extend([
+        (0.02, 0.0028),
+        (0.02, 0.061),
         (0.25, 0.0354),
         (0.4, 0.0619),
         (0.6, 0.1082),
