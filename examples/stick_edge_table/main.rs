@@ -36,19 +36,22 @@ const B_HIGH: f64 = 0.25;
 /// Spence's guess begins (`spectral::GUESS_B_MIN`). The tops keep the nodes out of the thin
 /// slip zones, where the panels' node solves take seconds: measured with the generator's
 /// node solve (`solve_node`, 2 threads busy), 1 - c = 2e-6 lies at zeta = 4.4 (b* = 0.02
-/// and 0.05), 4.49 (0.1), about 4.7 (0.15), 4.9 (0.2) and 5.4 (0.25), where a node took
-/// 5-12 s; at zeta = 4.0, 1 - c = 3.4e-4 (b* = 0.02, node 1.5 s), 4.6e-4 (0.1, 0.95 s),
+/// and 0.05), 4.49 (0.1), about 4.6 (0.15), 4.9 (0.2) and 5.4 (0.25), where a node took
+/// 2.4-12 s; at zeta = 4.0, 1 - c = 3.4e-4 (b* = 0.02, node 1.5 s), 4.6e-4 (0.1, 0.95 s),
 /// 6.7e-4 (0.15, 0.69 s); at zeta = 4.5, 1 - c = 6.7e-6 (0.15, 1.3 s) and 2.6e-5 (0.2,
-/// 1.0 s). Each top is where 1 - c is about 1e-4 .. 3e-5 at its strip's smallest b*
-/// (1 - c grows with b* at fixed zeta), so that no node is thinner than that and none takes
-/// more than about 1.5 s; above the tops the spectral solver starts from Spence's guess.
-/// Three strips, so that the tops can rise with b*.
+/// 1.0 s). Each top lies where 1 - c is a few 1e-5 .. 1e-4 at its strip's smallest b*
+/// (1 - c grows with b* at fixed zeta), a decade or more above 2e-6: the thinnest slip zones
+/// at the nodes came out at 3.5e-4, 3.9e-5 and 1.3e-5 in the three strips (printed per
+/// patch), the build took 8.7, 8.2 and 19.2 min on 2 busy cores (load average about 6).
+/// Above the tops the spectral solver starts from Spence's guess. Three strips, so that the
+/// tops can rise with b*.
 const BELOW: [(f64, f64, f64); 3] = [(0.02, 0.1, 4.0), (0.1, 0.175, 4.25), (0.175, 0.25, 4.5)];
 /// Lower edge in zeta of the strips of [`BELOW`]: c = 1.32e-5 there at every b* (measured at
 /// b* = 0.02, 0.05, 0.1 and 0.25), under the spectral solver's smallest stick zone
 /// (`spectral::C_MIN`, 4e-5), so that every stick edge the spectral solver serves in these
 /// strips is tabulated. Lower, the panels' node solves slow down at small b*: at b* = 0.02 a
-/// node took 3.4 s at zeta = 0.75, 6.0 s at 0.5 and 1.8 s at 0 (0.21-0.44 s at b* = 0.25).
+/// node took 3.4 s at zeta = 0.75, 3.2-6.0 s at 0.5 and 1.0-1.9 s at 0 (0.16-0.57 s at
+/// b* = 0.25).
 const ZETA_BELOW: f64 = 0.75;
 /// zeta cut inside each strip of [`BELOW`] (as at zeta = 2 in the strips above).
 const ZETA_CUT_BELOW: f64 = 2.0;
