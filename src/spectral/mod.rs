@@ -206,9 +206,9 @@ const GUESS_STEPS: usize = 10;
 const GUESS_MAX_STEP: f64 = 2.0;
 
 /// The solution from a guessed stick edge lc0 (no table, no bound on the guess: outside the
-/// tabulated plane, below b* = 0.25 under or above the table's strips there): level 1's root by Newton steps with a secant slope, each at
-/// the level's sizes for its own c, until the step moves c by less than a tenth of `tol`;
-/// then the root search of [`from_edge`] ([`newton_ladder`]) from there. None where the bases
+/// tabulated plane, below b* = 0.25 under or above the table's strips there): level 1's root
+/// by Newton steps with a secant slope, each at the level's sizes for its own c, until the
+/// step moves c by less than a tenth of `tol`; then the root search of [`from_edge`] ([`newton_ladder`]) from there. None where the bases
 /// do not serve the guess or the root, or where the steps do not converge within
 /// [`GUESS_STEPS`] (the panels answer then).
 pub(crate) fn from_guess(
