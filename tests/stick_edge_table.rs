@@ -2,12 +2,16 @@
 //! solves: at nodes of the committed patches (re-solving part of what the generator solved:
 //! the interpolant must reproduce them), at random points off the nodes (seeds the
 //! generator never used), continuity across the patches' shared edges, coverage of the
-//! documented range, and the c-alone path of the public API taking it.
+//! documented range (a union of rectangles: below b* = 0.25 the strips stop short of the
+//! thin slip zones), and the c-alone path of the public API taking it.
 
 use orthoslip::stick_edge_table::{coordinates, coupling_at, evaluate, lookup, nodes, patches};
 use orthoslip::{Contact, Coupling, Material, Method, Profile, StickEdge, coupled};
 
-/// COUPLED's stick edge, to a relative accuracy of about 1e-12 in lc.
+/// COUPLED's stick edge, to a relative accuracy of about 1e-12 in lc: the panels' own root
+/// search (`coupled::solve`), which never looks at the table (`coupled::solve_panels_to`
+/// would: it solves the panels at the tabulated c where the table's bound meets the
+/// tolerance).
 fn reference(b: f64, mu: f64) -> StickEdge {
     let k = Coupling { bp: b, bq: b, mu };
     let e = coupled::solve(&k, 1e-8).expect("guess").edge();
@@ -109,8 +113,14 @@ fn no_jumps_between_patches() {
     assert!(pairs >= patches().len() - 1, "{pairs} shared edges");
 }
 
+/// The strips below b* = 0.25 as documented (docs/theory.md (T5)): (b* from, b* to,
+/// zeta top), each from zeta = 0.75.
+const BELOW: [(f64, f64, f64); 3] = [(0.02, 0.1, 4.0), (0.1, 0.175, 4.25), (0.175, 0.25, 4.5)];
+
 /// The documented range is covered: b* from 0.25 to 0.99, from the full-slip law's c = 1e-11
-/// up to mu~ = 4e6 (the large-friction extrapolation's last friction).
+/// up to mu~ = 4e6 (the large-friction extrapolation's last friction); below b* = 0.25 the
+/// strips of [`BELOW`], and nothing outside them there (COUPLED starts from Spence's stick
+/// edge there).
 #[test]
 fn covers_the_documented_range() {
     for i in 0..=40 {
@@ -122,6 +132,65 @@ fn covers_the_documented_range() {
         }
         assert!(coordinates(b, lower).1.abs() < 1e-12);
     }
+    for (b0, b1, top) in BELOW {
+        for i in 0..=20 {
+            let beta = b0.atanh() + (b1.atanh() - b0.atanh()) * i as f64 / 20.0;
+            for j in 0..=20 {
+                let zeta = 0.75 + (top - 0.75) * j as f64 / 20.0;
+                let (b, mu) = coupling_at(beta, zeta);
+                assert!(lookup(b, mu).is_some(), "b* {b} mu~ {mu}");
+            }
+            if i < 20 {
+                // the edges of the strips (b* < 0.25: the table above starts at zeta = 0)
+                for zeta in [0.7, top + 0.05] {
+                    let (b, mu) = coupling_at(beta, zeta);
+                    assert!(lookup(b, mu).is_none(), "b* {b} zeta {zeta}: tabulated");
+                }
+            }
+        }
+    }
+    let (b, mu) = coupling_at(0.019f64.atanh(), 2.0);
+    assert!(lookup(b, mu).is_none(), "b* {b} mu~ {mu}: tabulated");
+}
+
+/// Every patch below b* = 0.25 (the strips of [`BELOW`]), where `per_patch` random points of
+/// each are checked against the panels' root search (`reference`): the error within the
+/// patch's bound.
+fn strips_below_hold_at(per_patch: usize, step: usize, seed: u64) {
+    let mut rng = fastrand::Rng::with_seed(seed);
+    let (mut worst, mut n): (f64, usize) = (0.0, 0);
+    let below: Vec<_> = patches()
+        .iter()
+        .filter(|p| p.beta[1] <= 0.25f64.atanh() + 1e-12)
+        .collect();
+    assert!(below.len() >= BELOW.len(), "{} patches below", below.len());
+    for p in below.iter().step_by(step) {
+        for _ in 0..per_patch {
+            let beta = p.beta[0] + rng.f64() * (p.beta[1] - p.beta[0]);
+            let zeta = p.zeta[0] + rng.f64() * (p.zeta[1] - p.zeta[0]);
+            let (b, mu) = coupling_at(beta, zeta);
+            let (lc, bound) = lookup(b, mu).expect("inside a patch");
+            let d = distance(lc, reference(b, mu));
+            assert!(d <= bound, "b* {b} mu~ {mu}: {d:e} > {bound:e}");
+            assert!(bound <= 2e-11, "bound {bound:e} at b* {b} mu~ {mu}");
+            worst = worst.max(d / bound);
+            n += 1;
+        }
+    }
+    eprintln!("{n} points below b* = 0.25: worst error / bound {worst:.3}");
+}
+
+#[test]
+#[ignore = "slow tier: two random points in every patch below b* = 0.25 against the panels"]
+fn strips_below_hold_at_random_points() {
+    strips_below_hold_at(2, 1, 20261127);
+}
+
+/// The fast tier's share of [`strips_below_hold_at_random_points`]: one point in every third
+/// patch below b* = 0.25.
+#[test]
+fn strips_below_hold_at_a_few_random_points() {
+    strips_below_hold_at(1, 3, 27);
 }
 
 /// Beyond mu~ = 1e7 c alone is the table's extrapolation in 1/mu~; it agrees with the

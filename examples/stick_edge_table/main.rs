@@ -5,8 +5,9 @@
 //! Run: `cargo run --release --example stick_edge_table` (one command; it prints its runtime,
 //! the number of patches and COUPLED solves, and the largest bound).
 //!
-//! Covered: b* from [`B_FROM`] to 0.99, mu~ from the table's lower edge (the full-slip law's
-//! c = 1e-11) up to at least [`MU_HI`]. Each patch starts at `ROWS` x `COLS` Chebyshev points;
+//! Covered: b* from [`B_HIGH`] to 0.99, mu~ from the table's lower edge (the full-slip law's
+//! c = 1e-11) up to at least [`MU_HI`]; b* from [`B_FROM`] to B_HIGH, zeta from [`ZETA_BELOW`]
+//! up to tops short of the thin slip zones ([`BELOW`]). Each patch starts at `ROWS` x `COLS` Chebyshev points;
 //! where its coefficient tail (the last two rows and columns, times the patch's largest
 //! c (1 - c)) exceeds [`TAIL_TARGET`] it is halved along the direction with the larger tail.
 //! Accepted patches are then checked at [`CHECKS`] random points against COUPLED; the bound is
@@ -27,7 +28,33 @@ use orthoslip::{Coupling, Profile, StickEdge, coupled};
 use std::time::Instant;
 
 /// Smallest b* covered.
-const B_FROM: f64 = 0.25;
+const B_FROM: f64 = 0.02;
+/// b* where the strips up to [`MU_HI`] begin; below it the strips of [`BELOW`].
+const B_HIGH: f64 = 0.25;
+/// The strips below [`B_HIGH`]: (b* from, b* to, zeta top), each from [`ZETA_BELOW`] to its
+/// top. Their edges in b* start at [`B_FROM`], where the spectral solver's start from
+/// Spence's guess begins (`spectral::GUESS_B_MIN`). The tops keep the nodes out of the thin
+/// slip zones, where the panels' node solves take seconds: measured with the generator's
+/// node solve (`solve_node`, 2 threads busy), 1 - c = 2e-6 lies at zeta = 4.4 (b* = 0.02
+/// and 0.05), 4.49 (0.1), about 4.6 (0.15), 4.9 (0.2) and 5.4 (0.25), where a node took
+/// 2.4-12 s; at zeta = 4.0, 1 - c = 3.4e-4 (b* = 0.02, node 1.5 s), 4.6e-4 (0.1, 0.95 s),
+/// 6.7e-4 (0.15, 0.69 s); at zeta = 4.5, 1 - c = 6.7e-6 (0.15, 1.3 s) and 2.6e-5 (0.2,
+/// 1.0 s). Each top lies where 1 - c is a few 1e-5 .. 1e-4 at its strip's smallest b*
+/// (1 - c grows with b* at fixed zeta), a decade or more above 2e-6: the thinnest slip zones
+/// at the nodes came out at 3.5e-4, 3.9e-5 and 1.3e-5 in the three strips (printed per
+/// patch), the build took 8.7, 8.2 and 19.2 min on 2 busy cores (load average about 6).
+/// Above the tops the spectral solver starts from Spence's guess. Three strips, so that the
+/// tops can rise with b*.
+const BELOW: [(f64, f64, f64); 3] = [(0.02, 0.1, 4.0), (0.1, 0.175, 4.25), (0.175, 0.25, 4.5)];
+/// Lower edge in zeta of the strips of [`BELOW`]: c = 1.32e-5 there at every b* (measured at
+/// b* = 0.02, 0.05, 0.1 and 0.25), under the spectral solver's smallest stick zone
+/// (`spectral::C_MIN`, 4e-5), so that every stick edge the spectral solver serves in these
+/// strips is tabulated. Lower, the panels' node solves slow down at small b*: at b* = 0.02 a
+/// node took 3.4 s at zeta = 0.75, 3.2-6.0 s at 0.5 and 1.0-1.9 s at 0 (0.16-0.57 s at
+/// b* = 0.25).
+const ZETA_BELOW: f64 = 0.75;
+/// zeta cut inside each strip of [`BELOW`] (as at zeta = 2 in the strips above).
+const ZETA_CUT_BELOW: f64 = 2.0;
 /// Largest b* covered.
 const B_TO: f64 = 0.99;
 /// mu~ covered at every b* (the last zeta row of a strip reaches it at the strip's smallest b*).
@@ -84,16 +111,19 @@ struct Built {
 
 /// A patch and its splits, appended to `out`; returns the COUPLED solves made.
 fn build(beta: [f64; 2], zeta: [f64; 2], depth: usize, out: &mut Vec<Built>) -> usize {
+    let started = Instant::now();
     let points = nodes(beta, zeta, ROWS, COLS);
     let solved = solve_all(&points);
     let mut values = Vec::with_capacity(points.len());
     let (mut scale, mut node_tol) = (0.0f64, 0.0f64);
+    let mut thinnest = f64::INFINITY;
     for r in &solved {
         match r {
             Ok((lc, cw, tol)) => {
                 values.push(*lc);
                 scale = scale.max(*cw);
                 node_tol = node_tol.max(*tol);
+                thinnest = thinnest.min(1.0 / (1.0 + lc.exp()));
             }
             Err(e) => panic!("node failed: {e}"),
         }
@@ -111,8 +141,12 @@ fn build(beta: [f64; 2], zeta: [f64; 2], depth: usize, out: &mut Vec<Built>) -> 
         * scale;
     let tail = row_tail.max(col_tail);
     eprintln!(
-        "patch beta [{:.4}, {:.4}] zeta [{:.3}, {:.3}] depth {depth}: tails {row_tail:.1e} (beta) {col_tail:.1e} (zeta)",
-        beta[0], beta[1], zeta[0], zeta[1]
+        "patch beta [{:.4}, {:.4}] zeta [{:.3}, {:.3}] depth {depth}: tails {row_tail:.1e} (beta) {col_tail:.1e} (zeta), smallest 1 - c at the nodes {thinnest:.1e}, {:.1?}",
+        beta[0],
+        beta[1],
+        zeta[0],
+        zeta[1],
+        started.elapsed()
     );
     if tail > TAIL_TARGET && depth < MAX_DEPTH {
         let mut n = points.len();
@@ -159,13 +193,34 @@ fn build(beta: [f64; 2], zeta: [f64; 2], depth: usize, out: &mut Vec<Built>) -> 
     points.len() + CHECKS
 }
 
-/// The strips' edges in beta = artanh(b*): b* = B_FROM .. 0.3, then six equal steps of beta
-/// up to B_TO.
+/// The edges in beta = artanh(b*) of the strips up to [`MU_HI`]: b* = B_HIGH .. 0.3, then six
+/// equal steps of beta up to B_TO.
 fn strips() -> Vec<f64> {
     let (from, to) = (0.3f64.atanh(), B_TO.atanh());
-    std::iter::once(B_FROM.atanh())
+    std::iter::once(B_HIGH.atanh())
         .chain((0..=6).map(|i| from + (to - from) * i as f64 / 6.0))
         .collect()
+}
+
+/// Every strip: its beta range and zeta cuts. First the strips up to [`MU_HI`], from zeta = 0,
+/// then those of [`BELOW`] (so that the patches above b* = 0.25 keep their place in the
+/// generated file).
+fn all_strips() -> Vec<([f64; 2], Vec<f64>)> {
+    let mut out: Vec<([f64; 2], Vec<f64>)> = strips()
+        .windows(2)
+        .map(|w| {
+            // zeta reaching MU_HI at the strip's smallest b* (where mu_lo is smallest)
+            let top = coordinates(w[0].tanh(), MU_HI).1;
+            ([w[0], w[1]], vec![0.0, 2.0, 4.0, 6.0, 9.0, 13.0, top])
+        })
+        .collect();
+    out.extend(BELOW.iter().map(|&(b0, b1, top)| {
+        (
+            [b0.atanh(), b1.atanh()],
+            vec![ZETA_BELOW, ZETA_CUT_BELOW, top],
+        )
+    }));
+    out
 }
 
 /// A patch as a line of the generated source.
@@ -198,16 +253,12 @@ fn main() -> std::io::Result<()> {
         .map(|i| args[i + 1].parse().expect("--strip takes a strip index"));
     let mut out = Vec::new();
     let mut solves = 0;
-    for (s, w) in strips().windows(2).enumerate() {
+    for (s, (beta, cuts)) in all_strips().into_iter().enumerate() {
         if only.is_some_and(|o| o != s) {
             continue;
         }
-        let (b0, b1) = (w[0], w[1]);
-        // zeta reaching MU_HI at the strip's smallest b* (where mu_lo is smallest)
-        let top = coordinates(b0.tanh(), MU_HI).1;
-        let cuts = [0.0, 2.0, 4.0, 6.0, 9.0, 13.0, top];
         for z in cuts.windows(2) {
-            solves += build([b0, b1], [z[0], z[1]], 0, &mut out);
+            solves += build(beta, [z[0], z[1]], 0, &mut out);
         }
     }
     if only.is_some() {
@@ -226,9 +277,15 @@ fn main() -> std::io::Result<()> {
          use super::Patch;\n\n",
     );
     src += &format!(
-        "/// {} patches over b* = {B_FROM} .. {B_TO}, mu~ from the full-slip law's c = {C_LO:e} \
-         up to at least {MU_HI:e}.\npub(super) const PATCHES: &[Patch] = &[\n",
-        out.len()
+        "/// {} patches: over b* = {B_HIGH} .. {B_TO} from the full-slip law's c = {C_LO:e} up to \
+         mu~ = {MU_HI:e} at least; over b* = {B_FROM} .. {B_HIGH} from zeta = {ZETA_BELOW} up to \
+         zeta = {}.\npub(super) const PATCHES: &[Patch] = &[\n",
+        out.len(),
+        BELOW
+            .iter()
+            .map(|&(b0, b1, top)| format!("{top} (b* = {b0} .. {b1})"))
+            .collect::<Vec<_>>()
+            .join(", ")
     );
     for p in &out {
         src += &patch_source(p);

@@ -895,9 +895,21 @@ fn solve_with(
 
 /// The spectral solver ([`crate::spectral`]) from the tabulated stick edge, where the table
 /// covers the reduced coupling below [`MU_EXTRAPOLATE`] ([`crate::spectral::from_edge`]: at
-/// that edge where its bound meets `tol`, else by the root search started there); None where
-/// neither meets the tolerances (the panels answer there).
+/// that edge where its bound meets `tol`, else by the root search started there), else from
+/// Spence's stick edge ([`crate::spectral::from_guess`]); None where neither meets the
+/// tolerances (the panels answer there).
 fn spectral_from_table(k: &Coupling, tol: f64, traction_tol: f64) -> Option<CoupledSolution> {
+    spectral_from(k, tol, traction_tol, true)
+}
+
+/// [`spectral_from_table`], with the table left out where not `table`: from Spence's stick
+/// edge everywhere (the tests compare both starts where the table covers the coupling).
+fn spectral_from(
+    k: &Coupling,
+    tol: f64,
+    traction_tol: f64,
+    table: bool,
+) -> Option<CoupledSolution> {
     if k.bp == 0.0 {
         return None;
     }
@@ -910,12 +922,18 @@ fn spectral_from_table(k: &Coupling, tol: f64, traction_tol: f64) -> Option<Coup
         mu: r.mu,
         g: r.edge_exponent(),
     };
-    let s = match crate::stick_edge_table::lookup(r.bp, r.mu) {
+    let tabulated = if table {
+        crate::stick_edge_table::lookup(r.bp, r.mu)
+    } else {
+        None
+    };
+    let s = match tabulated {
         Some((lc, bound)) => {
             crate::spectral::from_edge(consts, lc, bound, tol, traction_tol, delta)?
         }
         None => {
-            // outside the table (b* < 0.25): from Spence's stick edge
+            // outside the table (below b* = 0.25 under or above its strips there,
+            // [`crate::stick_edge_table`]): from Spence's stick edge
             let e = crate::spence::solve(&r).ok()?.edge();
             let lc0 = e.c.ln() - e.one_minus_c.ln();
             crate::spectral::from_guess(consts, lc0, tol, traction_tol, delta)?

@@ -81,7 +81,7 @@ const STALLED_LEVELS: usize = 2;
 /// 9.57037663, ...6220, ...6159 and ...5698 against the panels' 9.5703765706, so level 4
 /// answered with c 3.6e-12 off against an estimate of 2.3e-12, and level 5 would have
 /// refused it. Of the 63 points of
-/// `coupled::tests::spectral_agrees_with_the_panels_outside_the_table_on_a_grid`, 8 had
+/// `coupled::tests::spectral_agrees_with_the_panels_below_the_table_edge_on_a_grid`, 8 had
 /// 1 - c below 1e-3, this one the only failure; the largest ratio of distance to estimate
 /// elsewhere was 0.30.
 const CONFIRM_BELOW: f64 = 1e-3;
@@ -189,12 +189,13 @@ pub(crate) fn from_edge(
 /// 1.7e-11, so there is no independent reference to check the spectral c against there
 /// (sigma's slope is 3.3e-4, so c is weakly fixed; the tractions of the two methods agreed to
 /// 1.5e-14). From b* = 0.02 on, every answer agreed with the panels within the estimates
-/// (`coupled::tests::spectral_agrees_with_the_panels_outside_the_table*`).
+/// (`coupled::tests::spectral_agrees_with_the_panels_from_the_table_below`,
+/// `coupled::tests::spectral_agrees_with_the_panels_below_the_table_edge_on_a_grid`).
 const GUESS_B_MIN: f64 = 0.02;
 
 /// Most level-1 steps of [`from_guess`]: from Spence's stick edge at the 6 scenes of
-/// `coupled::tests::spectral_agrees_with_the_panels_outside_the_table` (b* = 0.02 .. 0.24,
-/// c = 4.5e-5 .. 1 - 1.2e-4) the search took 2-4 before level 1's rounding stopped it; more
+/// `coupled::tests::spectral_agrees_with_the_panels_from_the_table_below` (b* = 0.02 .. 0.24,
+/// c = 4.4e-5 .. 1 - 1.2e-4) the search took 2-4 before level 1's rounding stopped it; more
 /// means it is not converging and the panels answer.
 const GUESS_STEPS: usize = 10;
 
@@ -204,10 +205,10 @@ const GUESS_STEPS: usize = 10;
 /// steps of this length.
 const GUESS_MAX_STEP: f64 = 2.0;
 
-/// The solution from a guessed stick edge lc0 (no table, no bound on the guess: b* < 0.25,
-/// outside the tabulated plane): level 1's root by Newton steps with a secant slope, each at
-/// the level's sizes for its own c, until the step moves c by less than a tenth of `tol`;
-/// then the root search of [`from_edge`] ([`newton_ladder`]) from there. None where the bases
+/// The solution from a guessed stick edge lc0 (no table, no bound on the guess: outside the
+/// tabulated plane, below b* = 0.25 under or above the table's strips there): level 1's root
+/// by Newton steps with a secant slope, each at the level's sizes for its own c, until the
+/// step moves c by less than a tenth of `tol`; then the root search of [`from_edge`] ([`newton_ladder`]) from there. None where the bases
 /// do not serve the guess or the root, or where the steps do not converge within
 /// [`GUESS_STEPS`] (the panels answer then).
 pub(crate) fn from_guess(

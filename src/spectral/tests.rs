@@ -91,17 +91,8 @@ fn residuals_off_the_collocation_points() {
 /// bound plus its own estimate. Returns (answered, tried, the largest distance from the table
 /// over the bound plus the estimate); `grid` points per coordinate over the patches' extent.
 fn sweep(grid: usize) -> (usize, usize, f64) {
-    let patches = crate::stick_edge_table::patches();
-    let lo_b = patches
-        .iter()
-        .map(|p| p.beta[0])
-        .fold(f64::INFINITY, f64::min);
-    let hi_b = patches.iter().map(|p| p.beta[1]).fold(0.0, f64::max);
-    let lo_z = patches
-        .iter()
-        .map(|p| p.zeta[0])
-        .fold(f64::INFINITY, f64::min);
-    let hi_z = patches.iter().map(|p| p.zeta[1]).fold(0.0, f64::max);
+    // the patches' extent; its points outside every patch are left out (lookup is None)
+    let ([lo_b, hi_b], [lo_z, hi_z]) = crate::stick_edge_table::extent();
     let (mut answered, mut tried, mut worst) = (0, 0, 0.0f64);
     for i in 0..grid {
         for j in 0..grid {
@@ -194,8 +185,11 @@ fn sensitivity_bounds_hold() {
             crate::stick_edge_table::coupling_at(beta, zeta)
         })
         .collect();
-    // the smallest stick zones served (c = 4.2e-5 .. 9e-5)
+    // the smallest stick zones served (c = 4.2e-5 .. 9e-5), and the smallest b* of the table
+    // at its smallest stick zone served and near its top
     scenes.extend([
+        (0.02, 0.0028),
+        (0.02, 0.061),
         (0.25, 0.0354),
         (0.4, 0.0619),
         (0.6, 0.1082),
