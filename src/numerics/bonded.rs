@@ -50,6 +50,21 @@ pub(crate) struct Bonded {
     taylor: Vec<Vec<C64>>,
     /// -(psi(a + m + 1) + gamma) (the expansion about Z = 1 of each power).
     psi: Vec<C64>,
+    /// 1 / (a + i) for i from -MAX_TERMS on (the series' coefficients).
+    recips: Vec<C64>,
+    /// (1 - c)^(a + m).
+    w_pow: Vec<C64>,
+}
+
+/// A point's quantities shared by the powers' transforms.
+struct Offsets {
+    omy: f64,
+    z: f64,
+    u: f64,
+    ln_u: f64,
+    /// (1 - y)^a, in the expansion about Z = 1 only.
+    pow_a: C64,
+    inside: bool,
 }
 
 impl Bonded {
@@ -99,6 +114,12 @@ impl Bonded {
         let psi = (0..terms + degree)
             .map(|m| -(digamma_complex(a + (m + 1) as f64) + EULER_GAMMA))
             .collect();
+        let recips = (0..2 * MAX_TERMS + terms + degree + 2)
+            .map(|i| (a + (i as f64 - MAX_TERMS as f64)).inv())
+            .collect();
+        let w_pow = (0..terms + degree + 1)
+            .map(|m| ((a + m as f64) * w.ln()).exp())
+            .collect();
         Bonded {
             eps,
             b: (PI * eps).tanh(),
@@ -108,6 +129,8 @@ impl Bonded {
             moments,
             taylor,
             psi,
+            recips,
+            w_pow,
         }
     }
 
@@ -131,54 +154,54 @@ impl Bonded {
         }
     }
 
-    /// The transform over [c, 1] of (1 - x)^(a + m) at y, given by 1 - y > 0 and c - y
-    /// (< 0 inside the zone): without its singular part -cot(pi a) (1 - y)^(a + m) when y
-    /// lies inside (X3).
-    fn power_transform(&self, m: usize, omy: f64, cmy: f64) -> C64 {
-        let beta = C64::new(m as f64 - 0.5, -self.eps);
-        let z = self.w / omy;
+    /// The transform over [c, 1] of (1 - x)^(a + m) at the point `at`: without its
+    /// singular part -cot(pi a) (1 - y)^(a + m) when the point lies inside (X3).
+    fn power_transform(&self, m: usize, at: &Offsets) -> C64 {
+        let tol2 = SERIES_TOL * SERIES_TOL;
+        let z = at.z;
         if z <= Z_SERIES {
             // -(1/pi) w^(beta+1) / (1 - y) sum_n Z^n / (n + beta + 1)
             let (mut sum, mut zn) = (C64::new(0.0, 0.0), 1.0);
             for n in 0..MAX_TERMS {
-                let t = (beta + (n + 1) as f64).inv() * zn;
+                let t = self.recip(m as isize + n as isize + 1) * zn;
                 sum += t;
-                if t.norm() < SERIES_TOL * sum.norm() {
+                if t.norm_sqr() < tol2 * sum.norm_sqr() {
                     break;
                 }
                 zn *= z;
             }
-            -((beta + 1.0) * self.w.ln()).exp() / omy * sum / PI
+            -self.w_pow[m + 1] / at.omy * sum / PI
         } else if z >= Z_INVERSE {
             // (1/pi) w^beta sum_n Z^-n / (beta - n)
             let (mut sum, mut zn) = (C64::new(0.0, 0.0), 1.0);
             let iz = 1.0 / z;
             for n in 0..MAX_TERMS {
-                let t = (beta - n as f64).inv() * zn;
+                let t = self.recip(m as isize - n as isize) * zn;
                 sum += t;
-                if t.norm() < SERIES_TOL * sum.norm() {
+                if t.norm_sqr() < tol2 * sum.norm_sqr() {
                     break;
                 }
                 zn *= iz;
             }
-            (beta * self.w.ln()).exp() * sum / PI
+            self.w_pow[m] * sum / PI
         } else {
             // -(1/pi) (1 - y)^beta [F(1) - sum_k binom(beta, k) (-u)^k / k - ln|u|],
             // u = 1 - Z = (c - y) / (1 - y)
-            let u = cmy / omy;
+            let beta = C64::new(m as f64 - 0.5, -self.eps);
+            let u = at.u;
             let (mut sum, mut d, mut un) = (C64::new(0.0, 0.0), C64::new(1.0, 0.0), 1.0);
             for k in 1..MAX_TERMS {
-                d = d * (k as f64 - 1.0 - beta) / k as f64;
+                d = d * (k as f64 - 1.0 - beta) * (1.0 / k as f64);
                 un *= u;
                 let t = d * (un / k as f64);
                 sum += t;
-                if t.norm() < SERIES_TOL * sum.norm().max(1.0) {
+                if t.norm_sqr() < tol2 * sum.norm_sqr().max(1.0) {
                     break;
                 }
             }
-            let pow = (beta * omy.ln()).exp();
-            let full = -pow * (self.psi[m] - sum - u.abs().ln()) / PI;
-            if cmy < 0.0 {
+            let pow = at.pow_a * at.omy.powi(m as i32);
+            let full = -pow * (self.psi[m] - sum - at.ln_u) / PI;
+            if at.inside {
                 // inside: remove -cot(pi beta) (1 - y)^beta, cot(pi beta) = i b
                 full + pow * C64::new(0.0, self.b)
             } else {
@@ -187,12 +210,36 @@ impl Bonded {
         }
     }
 
-    /// H_[c,1][X x^k](y) for every k (without the singular part inside the zone).
+    /// 1 / (a + i).
+    fn recip(&self, i: isize) -> C64 {
+        self.recips[(i + MAX_TERMS as isize) as usize]
+    }
+
+    /// H_[c,1][X x^k](y) for every k (without the singular part inside the zone), y given
+    /// by 1 - y > 0 and c - y (< 0 inside the zone).
     fn slip_part(&self, omy: f64, cmy: f64, out: &mut [C64]) {
         out.iter_mut().for_each(|o| *o = C64::new(0.0, 0.0));
+        let z = self.w / omy;
+        let u = cmy / omy;
+        let at = Offsets {
+            omy,
+            z,
+            u,
+            ln_u: if z > Z_SERIES && z < Z_INVERSE {
+                u.abs().ln()
+            } else {
+                0.0
+            },
+            pow_a: if z > Z_SERIES && z < Z_INVERSE {
+                (C64::new(-0.5, -self.eps) * omy.ln()).exp()
+            } else {
+                C64::new(0.0, 0.0)
+            },
+            inside: cmy < 0.0,
+        };
         let terms = self.taylor.iter().map(Vec::len).max().unwrap_or(0);
         for m in 0..terms {
-            let h = self.power_transform(m, omy, cmy);
+            let h = self.power_transform(m, &at);
             for (o, row) in out.iter_mut().zip(&self.taylor) {
                 if let Some(g) = row.get(m) {
                     *o += g * h;

@@ -52,6 +52,15 @@ const G_MIN: f64 = 0.03;
 /// panels (docs/theory_spectral.md section 6).
 const W_MIN: f64 = 5e-9;
 
+/// Slip zones thinner than W_THIN are served only where g >= G_THIN. On the grid of
+/// [`W_MIN`], the slip zones of 5e-9 .. 5e-6 answered at g = 0.16 .. 0.50 (15 points) and
+/// not at g = 0.042 .. 0.105 (3 points, b* = 0.23); on the 24 x 24 grid of the table's
+/// coordinates, 1 - c = 4.1e-6 at g = 0.061 (b* = 0.2961, mu~ = 17.5) did not answer either:
+/// its residual (R1) stayed at 1e-8 .. 3.5e-8 over levels 2-6 (small g, (B5)). W_THIN is the
+/// limit of phase one.
+const W_THIN: f64 = 5e-6;
+const G_THIN: f64 = 0.15;
+
 /// Smallest stick zone the bases serve in this phase, the smallest measured: at c = 4.8e-5
 /// (the carbon ply at mu = 0.1) the answer passed GSL's pointwise check in
 /// tests/c/coupled_residuals.c and agreed with the panels' tractions to 4.8e-12
@@ -146,10 +155,15 @@ fn sigma_at(k: Constants, lc: f64, sizes: Sizes) -> Option<Level> {
 }
 
 /// Whether the bases serve the coupling near the stick edge lc: g >= [`G_MIN`],
-/// b* <= [`B_MAX`], c >= [`C_MIN`] and 1 - c >= [`W_MIN`].
+/// b* <= [`B_MAX`], c >= [`C_MIN`] and 1 - c >= [`W_MIN`], and g >= [`G_THIN`] below
+/// 1 - c = [`W_THIN`].
 fn serves(k: Constants, lc: f64) -> bool {
     let e = StickEdge::from_logit(lc);
-    k.g >= G_MIN && k.b <= B_MAX && e.c >= C_MIN && e.one_minus_c >= W_MIN
+    k.g >= G_MIN
+        && k.b <= B_MAX
+        && e.c >= C_MIN
+        && e.one_minus_c >= W_MIN
+        && (e.one_minus_c >= W_THIN || k.g >= G_THIN)
 }
 
 /// The solution from the tabulated stick edge lc, known within `bound` in c: c within `tol`
