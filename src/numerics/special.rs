@@ -67,6 +67,24 @@ pub(crate) fn digamma(x: f64) -> f64 {
     shift + y.ln() - 0.5 / y - series
 }
 
+/// Digamma psi(z) for complex z with Re z > 0, as [`digamma`]: psi(z + 1) = psi(z) + 1/z up
+/// to Re z >= 10, then DLMF 5.11.2 (|z| >= 10 there, so the same truncation bound holds).
+pub(crate) fn digamma_complex(z: Complex<f64>) -> Complex<f64> {
+    let mut y = z;
+    let mut shift = Complex::new(0.0, 0.0);
+    while y.re < STIRLING_FROM {
+        shift -= y.inv();
+        y += 1.0;
+    }
+    let r2 = (y * y).inv();
+    let (mut series, mut power) = (Complex::new(0.0, 0.0), r2);
+    for (k, ck) in STIRLING.iter().enumerate() {
+        series += power * (ck * (2 * k + 1) as f64);
+        power *= r2;
+    }
+    shift + y.ln() - y.inv() * 0.5 - series
+}
+
 /// ln(1 + e/x) / e, with its limit 1/x at e = 0.
 fn log_slope(x: f64, e: f64) -> f64 {
     if e == 0.0 {

@@ -42,13 +42,24 @@ use system::{Fixed, Sizes, solve_fixed};
 /// from g < 1e-2); until it is built, the panels answer there.
 const G_MIN: f64 = 0.03;
 
-/// Thinnest slip zone the bases serve in this phase: on the 24 x 24 grid with no limit,
-/// 1 - c = 6.6e-6 answered and agreed with the panels, 4.1e-6 went unanswered (g = 0.061)
-/// and 3.4e-6 answered wrongly (g = 0.027, see [`G_MIN`]); on the grids of 37 and 53 points
-/// per side every point down to 6.7e-6 answered and agreed with the panels. Thinner slip
-/// zones are the next phase's (tapered poles, or the inner/outer split with the bonded
-/// family).
-const W_MIN: f64 = 5e-6;
+/// Thinnest slip zone the bases serve: with the bonded columns ((X1), below 1 - c = 1e-2),
+/// on a grid of b* = 0.02 .. 0.23 (8 rows) and mu~ = 1e-4 1.6^j (the 66 points the panels
+/// answer with 1e-10 <= 1 - c <= 1e-2), every answer agreed with the panels (c and tractions
+/// within the sum of both estimates) down to 1 - c = 7.8e-9; from 3.0e-9 down no point
+/// answered (the levels' sigma noise, some 1e-8, moves the root by more than the tractions
+/// allow), nor did 4 points of b* = 0.23 with 1 - c = 2.8e-8 .. 4.2e-8 and g = 0.04 .. 0.1
+/// (each gave up after 0.1-0.2 s; the panels took 1 s). Thinner slip zones go to the
+/// panels (docs/theory_spectral.md section 6).
+const W_MIN: f64 = 5e-9;
+
+/// Slip zones thinner than W_THIN are served only where g >= G_THIN. On the grid of
+/// [`W_MIN`], the slip zones of 5e-9 .. 5e-6 answered at g = 0.16 .. 0.50 (15 points) and
+/// not at g = 0.042 .. 0.105 (3 points, b* = 0.23); on the 24 x 24 grid of the table's
+/// coordinates, 1 - c = 4.1e-6 at g = 0.061 (b* = 0.2961, mu~ = 17.5) did not answer either:
+/// its residual (R1) stayed at 1e-8 .. 3.5e-8 over levels 2-6 (small g, (B5)). W_THIN is the
+/// limit of phase one.
+const W_THIN: f64 = 5e-6;
+const G_THIN: f64 = 0.15;
 
 /// Smallest stick zone the bases serve in this phase, the smallest measured: at c = 4.8e-5
 /// (the carbon ply at mu = 0.1) the answer passed GSL's pointwise check in
@@ -85,6 +96,9 @@ const STALLED_LEVELS: usize = 2;
 /// 1 - c below 1e-3, this one the only failure; the largest ratio of distance to estimate
 /// elsewhere was 0.30.
 const CONFIRM_BELOW: f64 = 1e-3;
+
+/// Extra Newton solves per level of a thin slip zone's ladder (1 - c < [`CONFIRM_BELOW`]).
+const THIN_NEWTON: usize = 2;
 
 /// Factor on the distance between two levels' c and tractions in the error estimates.
 const SAFETY: f64 = 2.0;
@@ -141,10 +155,15 @@ fn sigma_at(k: Constants, lc: f64, sizes: Sizes) -> Option<Level> {
 }
 
 /// Whether the bases serve the coupling near the stick edge lc: g >= [`G_MIN`],
-/// b* <= [`B_MAX`], c >= [`C_MIN`] and 1 - c >= [`W_MIN`].
+/// b* <= [`B_MAX`], c >= [`C_MIN`] and 1 - c >= [`W_MIN`], and g >= [`G_THIN`] below
+/// 1 - c = [`W_THIN`].
 fn serves(k: Constants, lc: f64) -> bool {
     let e = StickEdge::from_logit(lc);
-    k.g >= G_MIN && k.b <= B_MAX && e.c >= C_MIN && e.one_minus_c >= W_MIN
+    k.g >= G_MIN
+        && k.b <= B_MAX
+        && e.c >= C_MIN
+        && e.one_minus_c >= W_MIN
+        && (e.one_minus_c >= W_THIN || k.g >= G_THIN)
 }
 
 /// The solution from the tabulated stick edge lc, known within `bound` in c: c within `tol`
@@ -231,6 +250,8 @@ pub(crate) fn from_guess(
     let shifted = at(lc0 + SLOPE_STEP)?;
     let mut slope = (shifted.fixed.sigma - cur.fixed.sigma) / SLOPE_STEP;
     let mut prev_step = f64::INFINITY;
+    // the tractions' move per unit of lc, measured between the last two steps (thin slip)
+    let mut rate: Option<f64> = None;
     for _ in 0..GUESS_STEPS {
         if slope == 0.0 || !slope.is_finite() {
             return None;
@@ -242,13 +263,21 @@ pub(crate) fn from_guess(
         }
         prev_step = step;
         let e = StickEdge::from_logit(cur.lc);
-        if e.c * e.one_minus_c * step.abs() <= 0.1 * tol {
+        // a thin slip zone's tractions move by rate |step| in lc (rate ~ sqrt(1 - c)), while
+        // its c moves by only c (1 - c) |step|: both must be met
+        let tractions_met = e.one_minus_c >= CONFIRM_BELOW
+            || rate.is_some_and(|r| SAFETY * r * step.abs() <= 0.1 * traction_tol);
+        if e.c * e.one_minus_c * step.abs() <= 0.1 * tol && tractions_met {
             return from_edge(k, cur.lc, f64::INFINITY, tol, traction_tol, delta);
         }
         let next = at(cur.lc + step)?;
         if step.abs() > SLOPE_STEP {
             // the secant (below SLOPE_STEP the sigmas' rounding would dominate it)
             slope = (next.fixed.sigma - cur.fixed.sigma) / step;
+        }
+        if e.one_minus_c < CONFIRM_BELOW {
+            let (dp, dq) = graded_distance(&next.fixed, &cur.fixed);
+            rate = Some((dp + delta * dq) / step.abs());
         }
         cur = next;
     }
@@ -403,8 +432,26 @@ fn newton_ladder(
     for level in FIRST_LEVEL + 1..=MAX_LEVEL {
         let edge = StickEdge::from_logit(lc);
         let (c, w) = (edge.c, edge.one_minus_c);
-        let cur = sigma_at(k, lc, Sizes::at(level, c, w))?.fixed;
-        let step = -cur.sigma / slope;
+        let mut cur = sigma_at(k, lc, Sizes::at(level, c, w))?.fixed;
+        let mut step = -cur.sigma / slope;
+        // a thin slip zone's tractions move by rate |step| with the level's own step: Newton
+        // at this level while that exceeds the tolerance and the step still halves
+        if w < CONFIRM_BELOW {
+            for _ in 0..THIN_NEWTON {
+                if SAFETY * (rate.0 + delta * rate.1) * step.abs() <= 0.5 * traction_tol {
+                    break;
+                }
+                let Some(next) = sigma_at(k, lc + step, Sizes::at(level, c, w)) else {
+                    break;
+                };
+                let next_step = -next.fixed.sigma / slope;
+                if next_step.abs() > 0.5 * step.abs() {
+                    break;
+                }
+                (lc, cur, step) = (lc + step, next.fixed, next_step);
+            }
+        }
+        let edge = StickEdge::from_logit(lc);
         let root = lc + step;
         if let Some((held, held_root)) = candidate.take() {
             let moved = StickEdge::from_logit(root).distance(StickEdge::from_logit(held_root));
@@ -414,7 +461,11 @@ fn newton_ladder(
         }
         let distance_c = StickEdge::from_logit(root).distance(StickEdge::from_logit(prev_root));
         let error = SAFETY * (distance_c + c * w * (step.abs() + prev_step.abs()));
-        let (dp, dq) = distance(&cur, &prev, &first.rules);
+        let (dp, dq) = if w < CONFIRM_BELOW {
+            graded_distance(&cur, &prev)
+        } else {
+            distance(&cur, &prev, &first.rules)
+        };
         let parts = (
             SAFETY * (dp + rate.0 * step.abs()),
             SAFETY * (dq + rate.1 * step.abs()),
@@ -523,6 +574,65 @@ fn distance(a: &Fixed, b: &Fixed, rules: &Rules) -> (f64, f64) {
         dq += 0.5 * w * ws * (qa - qb).abs() / weight;
     }
     (2.0 * dp, 2.0 * dq)
+}
+
+/// [`distance`] for a thin slip zone (1 - c < [`CONFIRM_BELOW`]), where the stick zone's
+/// tractions vary on the scale 1 - c next to x = c and 48 Gauss points in tau do not see it:
+/// 20-point Gauss-Legendre panels graded by factors of 3 in the distance from x = c (on both
+/// sides, from 1e-14 of the zone) and from x = 1, and one panel over the stick zone's inner
+/// half.
+fn graded_distance(a: &Fixed, b: &Fixed) -> (f64, f64) {
+    use points::Pt;
+    let (c, w) = (a.basis.c, a.basis.w);
+    let (t, wt) = gauss_legendre(20);
+    let (mut sp, mut sq) = (0.0, 0.0);
+    // panels (kind, d_lo, d_hi) in the offset d from x = c (kinds 0, 2), 0 (1) or 1 (3)
+    let mut panels: Vec<(u8, f64, f64)> = Vec::new();
+    let grade = |panels: &mut Vec<(u8, f64, f64)>, kind: u8, len: f64| {
+        let (mut prev, mut d) = (0.0, 1e-14 * len);
+        while d < 0.5 * len {
+            panels.push((kind, prev, d));
+            prev = d;
+            d *= 3.0;
+        }
+        panels.push((kind, prev, 0.5 * len));
+    };
+    // stick: x = c - d (d up to c / 2) and x = d (the centre half); slip: x = c + d, x = 1 - d
+    grade(&mut panels, 0, c);
+    panels.push((1, 0.0, 0.5 * c));
+    grade(&mut panels, 2, w);
+    grade(&mut panels, 3, w);
+    for (kind, lo, hi) in panels {
+        for (x, ww) in t.iter().zip(&wt) {
+            let d = lo + (hi - lo) * 0.5 * (x + 1.0);
+            let pt = match kind {
+                0 => Pt {
+                    x: c - d,
+                    omx: w + d,
+                    xmc: -d,
+                },
+                1 => Pt {
+                    x: d,
+                    omx: 1.0 - d,
+                    xmc: d - c,
+                },
+                2 => Pt {
+                    x: c + d,
+                    omx: w - d,
+                    xmc: d,
+                },
+                _ => Pt {
+                    x: 1.0 - d,
+                    omx: d,
+                    xmc: w - d,
+                },
+            };
+            let ((pa, qa), (pb, qb)) = (a.eval(&pt), b.eval(&pt));
+            sp += ww * 0.5 * (hi - lo) * (pa - pb).abs();
+            sq += ww * 0.5 * (hi - lo) * (qa - qb).abs();
+        }
+    }
+    (2.0 * sp, 2.0 * sq)
 }
 
 /// Points per zone of the admissibility check.

@@ -16,7 +16,12 @@ use crate::error::{Error, Result};
 use crate::numerics::jacobi_transform::{JacobiFamily, Point};
 use crate::numerics::lstsq::{ConstrainedFailure, constrained};
 
+use crate::numerics::bonded::Bonded;
+use faer::complex::Complex;
+
 use super::basis::{Block, parity};
+
+type C64 = Complex<f64>;
 use super::points::{Pt, collocation};
 
 /// The reduced problem's constants: bp = bq = b (b*), friction mu (mu~), edge exponent g.
@@ -28,7 +33,7 @@ pub(crate) struct Constants {
 }
 
 /// Sizes of the bases at one level of refinement.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct Sizes {
     /// Even Legendre polynomials in the stick p, odd ones in the stick q.
     pub(crate) legendre: usize,
@@ -38,6 +43,8 @@ pub(crate) struct Sizes {
     pub(crate) slip: [usize; 2],
     /// Pole pairs per stick block and poles per slip block.
     pub(crate) poles: [usize; 2],
+    /// Columns X x^(2k) and i X x^(2k+1), k < bonded, on the stick zone ((X1)).
+    pub(crate) bonded: usize,
 }
 
 impl Sizes {
@@ -51,18 +58,33 @@ impl Sizes {
         let per_decade = 2.0 + 0.5 * l;
         let decades = |[near, far]: [f64; 2]| (far / near).log10().max(0.0);
         let [stick, slip] = pole_ranges(c, w);
+        let bonded = w < BONDED_BELOW;
         let (stick_decades, slip_decades) = (decades(stick), decades(slip));
         Sizes {
             legendre: 3 + 2 * level,
             stick_g: 2 + 2 * level,
             slip: [5 + 3 * level, 3 + 2 * level],
             poles: [
-                (stick_decades * per_decade).ceil() as usize,
+                (stick_decades
+                    * if bonded {
+                        BONDED_STICK_DENSITY
+                    } else {
+                        per_decade
+                    })
+                .ceil() as usize,
                 (slip_decades * per_decade).ceil() as usize,
             ],
+            bonded: if bonded { BONDED } else { 0 },
         }
     }
 }
+
+/// Bonded columns X x^(2k), i X x^(2k+1), k < BONDED, where 1 - c < BONDED_BELOW (X1).
+const BONDED: usize = 3;
+const BONDED_BELOW: f64 = 1e-2;
+
+/// Stick poles per decade with the bonded columns, at every level (level 1's density).
+const BONDED_STICK_DENSITY: f64 = 2.5;
 
 /// The ranges [nearest, farthest] of the poles' distances (B4): the stick poles at
 /// x = +-(1 + zeta), zeta from (1 - c) / 10 to c, the slip poles at x = -(c + eta), eta from
@@ -101,6 +123,8 @@ pub(crate) struct Basis {
     stick: [Block; 3],
     /// Slip zone: (1 - s)^-g P^(-g,0), (1 - s)^-g (1 + s)^g P^(-g,g).
     slip: [Block; 2],
+    /// The bonded columns (last), if any.
+    bonded: Option<Bonded>,
     scratch: usize,
 }
 
@@ -162,19 +186,51 @@ impl Basis {
             .map(Block::scratch)
             .max()
             .unwrap_or(1);
+        let bonded = (sizes.bonded > 0).then(|| Bonded::new(k.b, c, w, 2 * sizes.bonded));
         Basis {
             c,
             w,
             k,
             stick,
             slip,
+            bonded,
             scratch,
         }
     }
 
     /// Number of coefficients (without sigma).
     pub(crate) fn len(&self) -> usize {
-        self.stick.iter().chain(&self.slip).map(Block::len).sum()
+        self.stick
+            .iter()
+            .chain(&self.slip)
+            .map(Block::len)
+            .sum::<usize>()
+            + self.bonded_len()
+    }
+
+    fn bonded_len(&self) -> usize {
+        self.bonded.as_ref().map_or(0, Bonded::degree)
+    }
+
+    /// Start of the bonded columns.
+    fn bonded_start(&self) -> usize {
+        self.len() - self.bonded_len()
+    }
+
+    /// The bonded columns' (p, q) parts from the complex X x^k (or their transforms):
+    /// X x^(2k) gives (Re, Im), i X x^(2k+1) gives (-Im, Re).
+    fn bonded_split(&self, f: &[C64], pv: &mut [f64], qv: &mut [f64]) {
+        let at = self.bonded_start();
+        for (j, v) in f.iter().enumerate() {
+            let col = at + j / 2 + (j % 2) * (f.len() / 2);
+            if j % 2 == 0 {
+                pv[col] = v.re;
+                qv[col] = v.im;
+            } else {
+                pv[col] = -v.im;
+                qv[col] = v.re;
+            }
+        }
     }
 
     /// Start of the stick q columns, of the slip columns.
@@ -212,6 +268,11 @@ impl Basis {
             self.stick[1].values(t, buf, &mut qv[q0..q0 + n1]);
             let n2 = self.stick[2].len();
             self.stick[2].values(t, buf, &mut qv[q0 + n1..q0 + n1 + n2]);
+            if let Some(bx) = &self.bonded {
+                let mut f = vec![C64::new(0.0, 0.0); bx.degree()];
+                bx.values(p.x, p.omx, &mut f);
+                self.bonded_split(&f, pv, qv);
+            }
         } else {
             let (s, _) = self.s_pair(p);
             let mut at = s0;
@@ -264,6 +325,12 @@ impl Basis {
             hp[j] = -own + mirror;
             hq[j] = mu * (-own - mirror);
         }
+        if let Some(bx) = &self.bonded {
+            let mut f = vec![C64::new(0.0, 0.0); bx.degree()];
+            let mut fb = vec![C64::new(0.0, 0.0); bx.scratch_len()];
+            bx.transforms(p.x, p.omx, p.xmc, &mut f, &mut fb);
+            self.bonded_split(&f, hp, hq);
+        }
     }
 
     /// Length of the scratch buffer of [`Basis::hilbert_row`].
@@ -286,8 +353,12 @@ impl Basis {
             b.integrals(&mut out[at..at + n]);
             at += n;
         }
-        for v in &mut out[s0..] {
+        for v in &mut out[s0..at] {
             *v *= self.w;
+        }
+        if let Some(bx) = &self.bonded {
+            let mut q = vec![0.0; out.len()];
+            self.bonded_split(&bx.integrals(), &mut out, &mut q);
         }
         out
     }
@@ -536,6 +607,19 @@ impl Fixed {
         // (1 - tau^2)^g = (c - x)^g (1 + tau)^g / c^g
         let (_, opt) = b.stick[2].weight_factors(t);
         let q_edge = dot(&b.stick[2], Some(opt / c.powf(g)), q0 + n1);
+        let (mut p, mut q_plain) = (p, q_plain);
+        if let Some(bx) = &b.bonded {
+            let n = b.len();
+            let (mut pv, mut qv) = (vec![0.0; n], vec![0.0; n]);
+            let mut f = vec![C64::new(0.0, 0.0); bx.degree()];
+            bx.values(x, 1.0 - x, &mut f);
+            b.bonded_split(&f, &mut pv, &mut qv);
+            let at = b.bonded_start();
+            for j in at..n {
+                p += pv[j] * self.coef[j];
+                q_plain += qv[j] * self.coef[j];
+            }
+        }
         (p, q_plain, q_edge)
     }
 
