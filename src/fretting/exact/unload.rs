@@ -563,6 +563,24 @@ impl Unloading<'_> {
         (leading, trailing)
     }
 
+    /// mu int p s over the leading zone (per pi B P^2): the energy the slip since Q* would
+    /// have dissipated under the present pressure, by parts as [`dissipation`].
+    pub(crate) fn slip_work(&self) -> f64 {
+        let k = &self.loaded.k;
+        let wa = self.level.wa;
+        let mut cuts = vec![0.0, wa];
+        for c in kinks(self.loaded) {
+            if c.opx > 0.0 && c.opx < wa {
+                cuts.push(c.opx);
+            }
+        }
+        cuts.sort_by(f64::total_cmp);
+        let m = |o: f64| k.mu * self.tractions(o, 2.0 - o).0;
+        by_parts(edge_exponent(k), &cuts, &m, &|o| {
+            self.slip_slope(o, 2.0 - o)
+        })
+    }
+
     /// int x p dx, the moment the guided punch carries (per P a).
     pub(crate) fn moment(&self) -> f64 {
         let s = &self.level.state;
@@ -599,6 +617,77 @@ fn graded(a: f64, b: f64, f: &dyn Fn(f64) -> f64) -> f64 {
             // from the nearer end, so that offsets keep their digits
             let x = if s < 0.5 * len { a + s } else { b - (len - s) };
             total += 0.5 * (v - u) * w * f(x);
+        }
+    }
+    total
+}
+
+/// The energy dissipated in the leading zone between two states of the branch, `a` at the
+/// higher load and `b` at the lower (per unit thickness, in pi B P^2; (T8) with the mean of
+/// the two pressures, so second order in the load step): int mu p_mid (s_b - s_a) over
+/// (-1, a1_b). With o = 1 + x and the slip increment ds(o) = -int_o^{wa_b} dslope (zero at
+/// a1_b), integration by parts gives -int_0^{wa_b} dslope(o) M(o) do, M(o) = int_0^o mu p_mid,
+/// where dslope = -(bq (p_b - p_a) + H[q_b] - H[q_a]) needs no loaded state.
+pub(crate) fn dissipation(a: &Unloading, b: &Unloading) -> f64 {
+    let k = &a.loaded.k;
+    let (sa, sb) = (&a.level.state, &b.level.state);
+    let mut cuts = vec![0.0, a.level.wa, b.level.wa];
+    for c in kinks(a.loaded) {
+        if c.opx > 0.0 && c.opx < b.level.wa {
+            cuts.push(c.opx);
+        }
+    }
+    cuts.sort_by(f64::total_cmp);
+    cuts.dedup();
+    let m = |o: f64| {
+        let (pa, _) = sa.tractions(o, 2.0 - o);
+        let (pb, _) = sb.tractions(o, 2.0 - o);
+        0.5 * k.mu * (pa + pb)
+    };
+    let dslope = |o: f64| {
+        let (la, lb) = (sa.frame.locate(o, 2.0 - o), sb.frame.locate(o, 2.0 - o));
+        let (pa, _) = sa.tractions_at(&la);
+        let (pb, _) = sb.tractions_at(&lb);
+        let (_, ha) = sa.hilbert_at(&la);
+        let (_, hb) = sb.hilbert_at(&lb);
+        -(k.bq * (pb - pa) + hb - ha)
+    };
+    by_parts(edge_exponent(k), &cuts, &m, &dslope)
+}
+
+/// -int_0^{cuts.last} f(o) M(o) do with M(o) = int_0^o m: [`graded_rule`]'s panels on each
+/// piece between cuts (f and m carry power singularities at the cuts), M accumulated between
+/// consecutive nodes by 8-point Gauss-Legendre, and from 0 to the first node by Gauss-Jacobi
+/// with m's weight o^-g taken out.
+///
+/// [`graded_rule`]: crate::numerics::quadrature::graded_rule
+fn by_parts(g: f64, cuts: &[f64], m: &dyn Fn(f64) -> f64, f: &dyn Fn(f64) -> f64) -> f64 {
+    use crate::numerics::quadrature::{gauss_jacobi, gauss_legendre, graded_rule};
+    let (jx, jw) = gauss_jacobi(8, 0.0, -g);
+    let (lx, lw) = gauss_legendre(8);
+    let (mut acc, mut prev, mut total) = (0.0, 0.0, 0.0);
+    for piece in cuts.windows(2) {
+        // panels shrinking by 0.1 towards both ends, down to 1e-15 of the half piece
+        for (o, wt) in graded_rule(piece[0], piece[1], 0.1, 1e-15, 16) {
+            let h = 0.5 * (o - prev);
+            acc += if prev == 0.0 {
+                // int_0^o m = h int_{-1}^{1} m(h (1 + t)) (1 + t)^g (1 + t)^-g dt, h = o/2,
+                // the last factor the rule's weight
+                jx.iter()
+                    .zip(&jw)
+                    .map(|(t, w)| {
+                        let s = h * (1.0 + t);
+                        h * w * m(s) * (1.0 + t).powf(g)
+                    })
+                    .sum::<f64>()
+            } else {
+                lx.iter()
+                    .zip(&lw)
+                    .map(|(t, w)| h * w * m(prev + h * (1.0 + t)))
+                    .sum::<f64>()
+            };
+            prev = o;
+            total -= wt * f(o) * acc;
         }
     }
     total

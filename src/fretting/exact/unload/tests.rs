@@ -4,7 +4,7 @@
 //! equilibrium by a quadrature of the returned tractions, the residuals of (U1)-(U2) at
 //! points between the collocation points, and the inequalities; the grid's corner layer at
 //! strong coupling, where the three-zone pattern is refused (docs/theory_tangential.md
-//! section 13).
+//! section 13); the dissipation of the first unloading against the grid's (section 14).
 
 use super::super::frame::Loc;
 use super::super::{contact_rule, monotonic};
@@ -474,4 +474,59 @@ fn pattern_on_the_grid() {
             }
         }
     }
+}
+
+/// The dissipation of the ply's first unloading Q* -> -Q* (Q* = 0.6 mu P) from the exact
+/// branch, against the grid LCP history's (N = 200, 20, 40 and 80 steps, extrapolated in
+/// the steps with order 1; docs/theory_tangential.md section 14): the three-zone phase from
+/// -0.485 Q* on, summed over 8 and 4 load steps with [`dissipation`] (second order in the
+/// step) and extrapolated; the part before is of the order of the slip work at -0.485 Q*.
+#[test]
+#[ignore]
+fn dissipation_of_the_first_unloading() {
+    let k = ply();
+    let q_star = 0.18;
+    let m = monotonic(&k, q_star, 1e-10, 1e-6).unwrap();
+    let t = std::time::Instant::now();
+    let q0 = -0.485 * q_star;
+    let n = 8;
+    let states: Vec<Unloading> = (0..=n)
+        .map(|j| {
+            let qp = q0 + (-q_star - q0) * j as f64 / n as f64;
+            unload(&m, qp, 1e-8, 1e-5).unwrap()
+        })
+        .collect();
+    let solved = t.elapsed().as_secs_f64();
+    let sum = |stride: usize| {
+        (0..n / stride)
+            .map(|j| dissipation(&states[j * stride], &states[(j + 1) * stride]))
+            .sum::<f64>()
+    };
+    let (w8, w4, w2) = (sum(1), sum(2), sum(4));
+    let exact = w8 + (w8 - w4) / 3.0;
+    let before = states[0].slip_work();
+    println!(
+        "exact, three-zone phase: W = {w2:.7e} (2 steps), {w4:.7e} (4), {w8:.7e} (8), \
+         extrapolated {exact:.7e}; slip work at -0.485 Q*: {before:.2e}; \
+         solves {solved:.1} s, sums {:.1} s",
+        t.elapsed().as_secs_f64() - solved
+    );
+    let grid_w = |steps: usize| {
+        let mut h = History::new(&k, 200).unwrap();
+        h.load(q_star, 5).unwrap();
+        h.load(-q_star, steps)
+            .unwrap()
+            .iter()
+            .map(|s| s.dissipation)
+            .sum::<f64>()
+    };
+    let (g20, g40, g80) = (grid_w(20), grid_w(40), grid_w(80));
+    let grid = 2.0 * g80 - g40;
+    println!(
+        "grid N = 200: W = {g20:.7e} (20 steps), {g40:.7e} (40), {g80:.7e} (80), \
+         extrapolated {grid:.7e}; exact - grid = {:.2e} ({:.2e} relative)",
+        exact - grid,
+        (exact - grid) / grid
+    );
+    assert!((exact - grid).abs() < 1e-3 * grid && (exact - grid).abs() < 3.0 * before);
 }
