@@ -355,23 +355,9 @@ pub(crate) fn unload<'a>(
     tol: f64,
     traction_tol: f64,
 ) -> Result<Unloading<'a>> {
+    check_load(m, qp)?;
     let k = &m.k;
     let q_star = m.qp();
-    if !(qp < q_star && qp > -k.mu) {
-        return Err(Error::InvalidArgument(format!(
-            "exact unloading: needs -mu < Q/P < Q*/P (Q/P = {qp}, Q*/P = {q_star}, mu = {})",
-            k.mu
-        )));
-    }
-    if let Some(qs) = first_slip(m)
-        && qp >= qs
-    {
-        return Err(Error::InvalidArgument(format!(
-            "exact unloading: with bp = 0 the branch sticks fully down to Q_s/P = {qs} \
-             (q = q* + (Q - Q*)/P p0, docs/theory_tangential.md (T13)); Q/P = {qp} is above it"
-        )));
-    }
-    let g = edge_exponent(k);
     let mut solves = 0;
     let wa0 = {
         let mut h = crate::lcp::history::History::new(k, START_PANELS)?;
@@ -413,11 +399,83 @@ pub(crate) fn unload<'a>(
             ))
         })?)
     };
+    ladder(m, qp, tol, traction_tol, (wa0, w2_0), 1, solves)
+}
+
+/// Q/P must lie on the branch: -mu < Q/P < Q*/P, and below the first-slip load when bp = 0.
+fn check_load(m: &Monotonic, qp: f64) -> Result<()> {
+    let (k, q_star) = (&m.k, m.qp());
+    if !(qp < q_star && qp > -k.mu) {
+        return Err(Error::InvalidArgument(format!(
+            "exact unloading: needs -mu < Q/P < Q*/P (Q/P = {qp}, Q*/P = {q_star}, mu = {})",
+            k.mu
+        )));
+    }
+    if let Some(qs) = first_slip(m)
+        && qp >= qs
+    {
+        return Err(Error::InvalidArgument(format!(
+            "exact unloading: with bp = 0 the branch sticks fully down to Q_s/P = {qs} \
+             (q = q* + (Q - Q*)/P p0, docs/theory_tangential.md (T13)); Q/P = {qp} is above it"
+        )));
+    }
+    Ok(())
+}
+
+/// The unloading state at Q/P = qp from the answer `prev` at another load of the same
+/// branch (a warm start along a path): Newton from prev's (wa, w2), extrapolated linearly in
+/// Q (wa, and ln w2) when the answer `before` prev is given too; no grid start and no scan
+/// of w2; the ladder from level 1 (started at prev's last level but one, it took more time
+/// than the cold start on the ply: each solve at levels 4-5 costs several at levels 1-2,
+/// section 14), and the cold start [`unload`] if that ladder does not converge.
+pub(crate) fn unload_from<'a>(
+    prev: &Unloading<'a>,
+    before: Option<&Unloading<'a>>,
+    qp: f64,
+    tol: f64,
+    traction_tol: f64,
+) -> Result<Unloading<'a>> {
+    let m = prev.loaded;
+    check_load(m, qp)?;
+    let (wa, w2) = (prev.level.wa, prev.level.w2);
+    let start = match before {
+        Some(b) if b.qp != prev.qp => {
+            let r = (qp - prev.qp) / (prev.qp - b.qp);
+            // wa linearly (it grows fast at the phase's start, where ln wa would overshoot),
+            // kept within a factor 2 of prev's; the thin w2 in its logarithm
+            let wa_next = (wa + r * (wa - b.level.wa)).clamp(0.5 * wa, (2.0 * wa).min(1.9));
+            let ln_next = |now: f64, then: f64| (now.ln() + r * (now.ln() - then.ln())).exp();
+            (wa_next, w2.zip(b.level.w2).map(|(n, t)| ln_next(n, t)))
+        }
+        _ => (wa, w2),
+    };
+    // a start that fails (no convergence near the ply's noise floor, or a prediction off the
+    // contact) falls back to the cold start
+    match ladder(m, qp, tol, traction_tol, start, 1, 0) {
+        Err(Error::NoConvergence(_) | Error::InvalidArgument(_)) => {
+            unload(m, qp, tol, traction_tol)
+        }
+        other => other,
+    }
+}
+
+/// The ladder of levels `first`, `first` + 1, ... up to [`MAX_LEVEL`] from (wa, w2), until
+/// two levels agree; the answer is checked for admissibility.
+fn ladder<'a>(
+    m: &'a Monotonic,
+    qp: f64,
+    tol: f64,
+    traction_tol: f64,
+    start: (f64, Option<f64>),
+    first: usize,
+    mut solves: usize,
+) -> Result<Unloading<'a>> {
+    let g = edge_exponent(&m.k);
     let mut jac = None;
     let mut trace = Vec::new();
     let mut prev: Option<Level> = None;
-    let (mut wa, mut w2) = (wa0, w2_0);
-    for level in 1..=MAX_LEVEL {
+    let (mut wa, mut w2) = start;
+    for level in first..=MAX_LEVEL {
         let l = unload_level(m, wa, w2, qp, level, tol, &mut jac)?;
         solves += l.solves;
         (wa, w2) = (l.wa, l.w2);
@@ -449,7 +507,7 @@ pub(crate) fn unload<'a>(
         .last()
         .map_or((f64::NAN, f64::NAN, f64::NAN), |t| (t.1, t.3, t.4));
     Err(Error::NoConvergence(format!(
-        "exact unloading: levels 1-{MAX_LEVEL} did not agree to {tol:e} (a1, a2) and \
+        "exact unloading: levels {first}-{MAX_LEVEL} did not agree to {tol:e} (a1, a2) and \
          {traction_tol:e} (tractions): the last two moved them by {:e} and {:e} (1 + a1 = {})",
         last.1, last.2, last.0
     )))

@@ -530,3 +530,93 @@ fn dissipation_of_the_first_unloading() {
     );
     assert!((exact - grid).abs() < 1e-3 * grid && (exact - grid).abs() < 3.0 * before);
 }
+
+/// A warm start from the answers at the two loads before on the branch (equal steps)
+/// gives the cold start's answer within the two answers' estimates (bp = 0, and the ply).
+#[test]
+fn warm_start_agrees_with_the_cold_start() {
+    let goodman = Coupling { bp: 0.0, ..ply() };
+    for (k, loaded_tol, tols, path) in [
+        (goodman, 1e-9, (1e-10, 1e-8), [-0.7, -0.75, -0.8]),
+        (ply(), 1e-6, (1e-8, 1e-5), [-0.8, -0.9, -1.0]),
+    ] {
+        let q_star = 0.18;
+        let m = monotonic(&k, q_star, 1e-10, loaded_tol).unwrap();
+        let a = unload(&m, path[0] * q_star, tols.0, tols.1).unwrap();
+        let b = unload(&m, path[1] * q_star, tols.0, tols.1).unwrap();
+        let to = path[2];
+        let cold = unload(&m, to * q_star, tols.0, tols.1).unwrap();
+        let warm = unload_from(&b, Some(&a), to * q_star, tols.0, tols.1).unwrap();
+        let (c, w) = (cold.stick_set(), warm.stick_set());
+        let g = edge_exponent(&k);
+        let dt = distance(g, &cold.level.state, &warm.level.state);
+        assert!(
+            (c.0 - w.0).abs() + (c.1 - w.1).abs() <= cold.c_error + warm.c_error
+                && dt <= cold.traction_error + warm.traction_error,
+            "cold {c:?}, warm {w:?} (estimates {:e}, {:e}); tractions {dt:e} apart",
+            cold.c_error,
+            warm.c_error
+        );
+        // (the solves are not always fewer: bp = 0 has no scan to skip, 12 warm against 11
+        // cold; at the ply the ladder's stop near the noise floor varies, 42 against 28 here
+        // and 21-43 against 28-50 along measure_warm_start's path)
+        println!("solves: warm {}, cold {}", warm.solves, cold.solves);
+    }
+}
+
+/// The time a warm start saves along the ply's branch (the 9 loads of
+/// `dissipation_of_the_first_unloading`; docs/theory_tangential.md section 14).
+#[test]
+#[ignore]
+fn measure_warm_start() {
+    let k = ply();
+    let q_star = 0.18;
+    let m = monotonic(&k, q_star, 1e-10, 1e-6).unwrap();
+    let q0 = -0.485 * q_star;
+    let loads: Vec<f64> = (0..=8)
+        .map(|j| q0 + (-q_star - q0) * j as f64 / 8.0)
+        .collect();
+    let t = std::time::Instant::now();
+    let cold: Vec<Unloading> = loads
+        .iter()
+        .map(|&qp| unload(&m, qp, 1e-8, 1e-5).unwrap())
+        .collect();
+    let t_cold = t.elapsed().as_secs_f64();
+    let t = std::time::Instant::now();
+    let mut warm = vec![unload(&m, loads[0], 1e-8, 1e-5).unwrap()];
+    for &qp in &loads[1..] {
+        let n = warm.len();
+        let before = (n >= 2).then(|| &warm[n - 2]);
+        let next = unload_from(&warm[n - 1], before, qp, 1e-8, 1e-5).unwrap();
+        warm.push(next);
+    }
+    let t_warm = t.elapsed().as_secs_f64();
+    let t = std::time::Instant::now();
+    for u in &cold {
+        u.admissible().unwrap();
+    }
+    let t_check = t.elapsed().as_secs_f64() / cold.len() as f64;
+    for (c, w) in cold.iter().zip(&warm) {
+        println!(
+            "Q/Q* {:.4}: cold a1 {:.10} ({} solves, level {}), warm a1 {:.10} ({} solves, level {}), \
+             apart {:.1e}",
+            c.qp / q_star,
+            c.stick_set().0,
+            c.solves,
+            c.levels,
+            w.stick_set().0,
+            w.solves,
+            w.levels,
+            (c.stick_set().0 - w.stick_set().0).abs()
+        );
+    }
+    let (sc, sw): (usize, usize) = (
+        cold.iter().map(|u| u.solves).sum(),
+        warm.iter().map(|u| u.solves).sum(),
+    );
+    println!(
+        "cold {t_cold:.1} s ({sc} solves), warm {t_warm:.1} s ({sw} solves); the admissibility \
+         check {:.0} ms per answer",
+        t_check * 1e3
+    );
+}
