@@ -235,6 +235,7 @@ fn equilibrium_residuals_and_inequalities() {
                 assert!(p > 0.0);
             }
         }
+        println!("bp = {}: largest relative residual {worst:e}", k.bp);
         assert!(worst < res_tol, "largest relative residual {worst:e}");
         let (leading, trailing) = u.zone_slips();
         assert!(leading.iter().all(|(_, s)| *s > 0.0), "{leading:?}");
