@@ -35,9 +35,11 @@ use crate::problem::{Coupling, Profile, StickEdge};
 
 pub use crate::lcp::history::Zone;
 
-/// The exact solver of monotonic loading (docs/theory_tangential.md sections 10-12), reached
-/// only from its tests until the load path and the cycles route to it (issue 27's next
-/// step: the unloading branch on the same frame, then `CycleMethod`'s exact value).
+/// The exact solver of monotonic loading (docs/theory_tangential.md sections 10-12) and of
+/// the first unloading's three-zone phase (sections 13-14), reached only from their tests
+/// until the load path and the cycles route to them (issue 27's next steps: the corner
+/// structure of the unloading at strong coupling and early in the branch, the reloading
+/// branch, then `CycleMethod`'s exact value).
 #[cfg_attr(not(test), allow(dead_code))]
 pub(crate) mod exact;
 

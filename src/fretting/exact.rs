@@ -16,6 +16,7 @@
 //! (g = 1/2 and the bonded exponent -1/2 coincide) and one border constant fixes c2.
 
 pub(crate) mod frame;
+pub(crate) mod unload;
 
 #[cfg(test)]
 mod tests;
@@ -185,13 +186,13 @@ impl Level {
 
 /// Newton steps per level at most (the levels of docs/theory_tangential.md section 12 took
 /// 2-25 solves, i.e. at most about 8 steps with their Jacobians).
-const MAX_NEWTON: usize = 20;
+pub(crate) const MAX_NEWTON: usize = 20;
 
 /// Finite-difference steps of the Jacobian in ln w1 and c2: far above sigma's rounding
 /// (1e-9 .. 1e-8 of its scale at the root, measured at the ply's levels 3-5) and far below
 /// its variation scales (a decade of w1; c2 + c).
-const STEP_LN_W1: f64 = 1e-3;
-const STEP_C2: f64 = 1e-5;
+pub(crate) const STEP_LN_W1: f64 = 1e-3;
+pub(crate) const STEP_C2: f64 = 1e-5;
 
 /// Thinnest edge zone the frame resolves: at the ply (Q/P = 0.09, c2 fixed) the border
 /// constants at levels 4 and 6 agreed to 1e-4 of their size for w1 >= 1e-7 and differed by
@@ -413,6 +414,8 @@ pub(crate) fn distance(g: f64, a: &Solved, b: &Solved) -> f64 {
 /// The monotonic end state with error estimates.
 pub(crate) struct Monotonic {
     pub(crate) k: Coupling,
+    /// Q/P.
+    pub(crate) qp: f64,
     /// The normal load's stick half-width (COUPLED) and its state on the frame.
     pub(crate) c: f64,
     pub(crate) normal: Solved,
@@ -430,20 +433,20 @@ pub(crate) struct Monotonic {
 
 /// Panels per half-width of the grid LCP that gives the start of c2 (cost about a
 /// millisecond; its c2 lies within about 0.2 / START_PANELS of the exact one at the ply).
-const START_PANELS: usize = 25;
+pub(crate) const START_PANELS: usize = 25;
 
 /// The edge zone's width while the start's c2 is corrected: about the ply's (1.2e-6 ..
 /// 1.6e-6, docs/theory_tangential.md section 10). At the ply, Q = 0.006 mu P, the border
 /// value at c2 moved by about 1e-4 per decade of w1 and by 1e-3 per 2e-3 of c2.
-const START_W1: f64 = 1e-6;
+pub(crate) const START_W1: f64 = 1e-6;
 
 /// Levels tried at most: the scenes of docs/theory_tangential.md section 12 stopped at
 /// levels 2-8 (698 unknowns at level 8).
-const MAX_LEVEL: usize = 8;
+pub(crate) const MAX_LEVEL: usize = 8;
 
 /// Factor on the distance between two levels in the estimates (as the normal-load solver's,
 /// docs/theory_spectral.md (S6)).
-const SAFETY: f64 = 2.0;
+pub(crate) const SAFETY: f64 = 2.0;
 
 /// The monotonic end state at Q/P = qp (0 < qp < mu), c1, c2 to `tol` and the tractions to
 /// `traction_tol` in the norm (T1), by the ladder of levels 1, 2, ... until two levels agree.
@@ -567,6 +570,7 @@ pub(crate) fn monotonic(k: &Coupling, qp: f64, tol: f64, traction_tol: f64) -> R
             if c_error <= tol && traction_error <= traction_tol {
                 return Ok(Monotonic {
                     k: *k,
+                    qp,
                     c,
                     normal,
                     level: l,
@@ -591,6 +595,11 @@ pub(crate) fn monotonic(k: &Coupling, qp: f64, tol: f64, traction_tol: f64) -> R
 }
 
 impl Monotonic {
+    /// Q/P.
+    pub(crate) fn qp(&self) -> f64 {
+        self.qp
+    }
+
     /// 1 + c1 and c2.
     pub(crate) fn stick_set(&self) -> (f64, f64) {
         (self.level.w1(), self.level.c2)

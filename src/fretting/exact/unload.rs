@@ -1,0 +1,752 @@
+//! The exact first unloading branch (docs/theory_tangential.md sections 13-14): P held, Q
+//! loaded monotonically to Q* and then decreased to Q < Q*. The state at Q is
+//! path-independent from the loaded state (the grid LCP's one step and ten steps agree to
+//! 4e-10 or better, section 13) and solves one problem per Q, with the loaded state (p*, q*) as data:
+//!
+//! - (U1) H[p] = bp q on (-1, 1);
+//! - (U2) on the stick set (a1, a2): H[q] + bq p = H[q*] + bq p* (the tangential
+//!   displacement moves with the punch since Q*);
+//! - (U3) on the new leading zone (-1, a1): q = -mu p (slip in +x since Q*); on the trailing
+//!   edge zone (a2, 1): q = +mu p (slip in -x since Q*, the loaded leading zone's direction);
+//! - (U4) int p = 1, int q = Q/P; bounded tractions at a1 and a2.
+//!
+//! This is (M1)-(M4) with the forcing of the loaded state instead of the normal load's, the
+//! thin zone at +1 (the mirror of section 10's argument) and the growing zone at -1. The
+//! forcing carries the loaded state's stick-slip exponents at c1*, c2* (and the normal
+//! load's at -c where the loaded stick set holds it): the stick set is split there, or poles
+//! sit beyond its ends where they lie in a slip zone ([`specs`]). With bp = 0 there is no
+//! zone at +1, and the branch sticks fully down to the first-slip load of (T13).
+//!
+//! Limits (section 13): for bp > 0 the grid shows, besides these zones, a stick layer at the
+//! corner x = -1 inside the leading zone (b* = 0.9: 0.015, 0.010, 0.0088 wide at N =
+//! 200, 400, 800) that this three-zone pattern omits, and early in the branch the ply's
+//! corner has that structure on the scale of 1e-6; [`Unloading::admissible`] refuses an
+//! answer whose leading zone slips backwards there.
+
+#[cfg(test)]
+mod tests;
+
+use super::frame::{Kind, Sizes, Solved, ZoneSpec, solve};
+use super::{
+    MAX_LEVEL, MAX_NEWTON, Monotonic, SAFETY, START_PANELS, STEP_LN_W1, W1_MIN, contact_rule,
+    distance, edge_exponent,
+};
+use crate::error::{Error, Result};
+use crate::problem::Coupling;
+
+/// A point where the loaded state's forcing r* = H[q*] + bq p* is singular, as 1 + x, and
+/// the side on which it carries |x - x0|^g (the side that slipped in the state that made it).
+#[derive(Clone, Copy, Debug)]
+struct Kink {
+    opx: f64,
+    slip_left: bool,
+    /// Whether the forcing continued from the right across the point is singular there (not
+    /// at c1*, where the forcing right of it is the normal load's r0, analytic at c1*).
+    seen_from_right: bool,
+}
+
+/// The loaded state's kinks: c1* (edge zone left of it), -c where the loaded stick set holds
+/// it (the normal load's slip zone left of it), c2* (the leading zone right of it).
+fn kinks(m: &Monotonic) -> Vec<Kink> {
+    let (w1, c2) = m.stick_set();
+    let mut out = Vec::new();
+    if w1 > 0.0 {
+        out.push(Kink {
+            opx: w1,
+            slip_left: true,
+            seen_from_right: false,
+        });
+    }
+    if c2 > -m.c {
+        out.push(Kink {
+            opx: 1.0 - m.c,
+            slip_left: true,
+            seen_from_right: true,
+        });
+    }
+    out.push(Kink {
+        opx: 1.0 + c2,
+        slip_left: false,
+        seen_from_right: true,
+    });
+    out
+}
+
+/// The unloading zones: the leading zone (-1, a1) of width `wa` = 1 + a1, the stick set
+/// split at the kinks inside it, and the trailing edge zone (a2, 1) of width `w2` = 1 - a2
+/// (None: the stick set reaches +1, bp = 0 only).
+fn specs(k: &Coupling, kinks: &[Kink], wa: f64, w2: Option<f64>) -> Vec<ZoneSpec> {
+    let g = edge_exponent(k);
+    let slip_end = || (vec![0.0, g], vec![0.0, g]);
+    let stick_end = || (vec![0.0], vec![0.0, g]);
+    let hi = 2.0 - w2.unwrap_or(0.0);
+    // a kink closer than this to a zone end is taken as that end (no zone of zero length):
+    // far below the thinnest zone the bases resolve (W1_MIN = 1e-7), far above the
+    // offsets' rounding (1e-16)
+    let gap = 1e-9;
+    let inside: Vec<&Kink> = kinks
+        .iter()
+        .filter(|c| c.opx > wa + gap && c.opx < hi - gap)
+        .collect();
+    // singular points of the continuation beyond the stick set's ends (section 13)
+    let before = kinks
+        .iter()
+        .filter(|c| c.opx <= wa + gap && c.seen_from_right)
+        .map(|c| (wa - c.opx).max(gap))
+        .fold(None, |a: Option<f64>, d| Some(a.map_or(d, |a| a.min(d))));
+    let after = kinks
+        .iter()
+        .filter(|c| c.opx >= hi - gap)
+        .map(|c| (c.opx - hi).max(gap))
+        .fold(None, |a: Option<f64>, d| Some(a.map_or(d, |a| a.min(d))));
+    let mut out = vec![ZoneSpec {
+        kind: Kind::Slip(-1.0),
+        len: wa,
+        p: [vec![-g], vec![0.0, g]],
+        q: [vec![], vec![]],
+        near: [None, None],
+    }];
+    let mut lo_opx = wa;
+    let (mut lo_p, mut lo_q) = stick_end();
+    let mut near_lo = before;
+    for c in &inside {
+        let (hp, hq) = if c.slip_left { slip_end() } else { stick_end() };
+        out.push(ZoneSpec {
+            kind: Kind::Stick,
+            len: c.opx - lo_opx,
+            p: [lo_p, hp],
+            q: [lo_q, hq],
+            near: [near_lo, None],
+        });
+        (lo_p, lo_q) = if c.slip_left { stick_end() } else { slip_end() };
+        lo_opx = c.opx;
+        near_lo = None;
+    }
+    let (hp, hq) = match w2 {
+        Some(_) => stick_end(),
+        None => (vec![-g], vec![-g]),
+    };
+    out.push(ZoneSpec {
+        kind: Kind::Stick,
+        len: hi - lo_opx,
+        p: [lo_p, hp],
+        q: [lo_q, hq],
+        near: [near_lo, after],
+    });
+    if let Some(w2) = w2 {
+        out.push(ZoneSpec {
+            kind: Kind::Slip(1.0),
+            len: w2,
+            p: [vec![0.0, g], vec![-g]],
+            q: [vec![], vec![]],
+            near: [None, None],
+        });
+    }
+    out
+}
+
+/// The fixed-geometry unloading solve at Q/P = `qp` from the loaded state `m`.
+pub(crate) fn unload_fixed(
+    m: &Monotonic,
+    wa: f64,
+    w2: Option<f64>,
+    qp: f64,
+    level: usize,
+) -> Result<Solved> {
+    let k = &m.k;
+    let hi = 2.0 - w2.unwrap_or(0.0);
+    if !(wa > 0.0 && wa < hi) {
+        return Err(Error::InvalidArgument(format!(
+            "exact unloading: stick set ({}, {}) empty or outside the contact",
+            wa - 1.0,
+            hi - 1.0
+        )));
+    }
+    let loaded = &m.level.state;
+    let bq = k.bq;
+    let forcing = |opx: f64, omx: f64| {
+        let l = loaded.frame.locate(opx, omx);
+        let (p, _) = loaded.tractions_at(&l);
+        let (_, hq) = loaded.hilbert_at(&l);
+        hq + bq * p
+    };
+    let n_sigma = if w2.is_some() { 2 } else { 1 };
+    solve(
+        *k,
+        &specs(k, &kinks(m), wa, w2),
+        Sizes::at(level),
+        n_sigma,
+        qp,
+        &forcing,
+    )
+}
+
+/// For bp = 0, the first-slip load Q_s/P = Q*/P - (mu + q*/p0 at x = -1) (section 13: the
+/// full-stick increment is ((Q - Q*)/P) p0, so q/p0 moves uniformly and reaches -mu first
+/// where q*/p0 is least, at the corner); None for bp > 0. q*/p0 = q*/p* is read at
+/// 1 + x = 1e-12, where its (1 + x)-term is below 1e-12.
+pub(crate) fn first_slip(m: &Monotonic) -> Option<f64> {
+    (m.k.bp == 0.0).then(|| {
+        let (p, q) = m.tractions(1e-12, 2.0 - 1e-12);
+        m.qp() - (m.k.mu + q / p)
+    })
+}
+
+/// The unloading state at one level.
+pub(crate) struct Level {
+    /// 1 + a1 and 1 - a2 (None: no trailing edge zone, bp = 0).
+    pub(crate) wa: f64,
+    pub(crate) w2: Option<f64>,
+    pub(crate) state: Solved,
+    /// The last Newton step's size in a1 and a2 (its own error bound).
+    pub(crate) step: f64,
+    pub(crate) solves: usize,
+}
+
+/// Solves (U1)-(U4) at one level: the border constants' root in (ln wa, ln w2) by Newton's
+/// method with a Jacobian by differences (`jac`, computed if None; the chord kept while the
+/// steps halve, as [`super::monotonic_level`]); a secant in wa on the one constant when
+/// bp = 0.
+pub(crate) fn unload_level(
+    m: &Monotonic,
+    wa: f64,
+    w2: Option<f64>,
+    qp: f64,
+    level: usize,
+    tol: f64,
+    jac: &mut Option<[[f64; 2]; 2]>,
+) -> Result<Level> {
+    let mut solves = 0;
+    let mut at = |wa: f64, w2: Option<f64>| -> Result<Solved> {
+        solves += 1;
+        unload_fixed(m, wa, w2, qp, level)
+    };
+    let Some(w2) = w2 else {
+        let (mut a, mut b) = (wa, wa * (1.0 + STEP_LN_W1));
+        let mut fa = at(a, None)?.sigma[0];
+        let mut sb = at(b, None)?;
+        let mut step = f64::INFINITY;
+        for _ in 0..MAX_NEWTON {
+            let fb = sb.sigma[0];
+            if fb == fa {
+                break;
+            }
+            let next = (b - fb * (b - a) / (fb - fa)).clamp(0.5 * b, (b + 0.05).min(1.999));
+            (a, fa) = (b, fb);
+            b = next;
+            sb = at(b, None)?;
+            let last = (b - a).abs();
+            let stalled = last > 0.5 * step;
+            step = last;
+            if step <= 0.1 * tol || stalled {
+                break;
+            }
+        }
+        return Ok(Level {
+            wa: b,
+            w2: None,
+            state: sb,
+            step,
+            solves,
+        });
+    };
+    let (mut la, mut lw) = (wa.ln(), w2.ln());
+    let mut s = at(la.exp(), Some(lw.exp()))?;
+    let mut step = f64::INFINITY;
+    let mut fresh = false;
+    for _ in 0..MAX_NEWTON {
+        let f = [s.sigma[0], s.sigma[1]];
+        if jac.is_none() {
+            let sa = at((la + STEP_LN_W1).exp(), Some(lw.exp()))?;
+            let sw = at(la.exp(), Some((lw + STEP_LN_W1).exp()))?;
+            *jac = Some([
+                [
+                    (sa.sigma[0] - f[0]) / STEP_LN_W1,
+                    (sw.sigma[0] - f[0]) / STEP_LN_W1,
+                ],
+                [
+                    (sa.sigma[1] - f[1]) / STEP_LN_W1,
+                    (sw.sigma[1] - f[1]) / STEP_LN_W1,
+                ],
+            ]);
+            fresh = true;
+        }
+        let j = jac.unwrap_or_default();
+        let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
+        if det == 0.0 || !det.is_finite() {
+            return Err(Error::NoConvergence(
+                "exact unloading: singular Jacobian of the border constants".to_string(),
+            ));
+        }
+        let d_la = -(j[1][1] * f[0] - j[0][1] * f[1]) / det;
+        let d_lw = -(-j[1][0] * f[0] + j[0][0] * f[1]) / det;
+        // at most a factor e in either width per step (the scales of section 10's scans)
+        let damp = 1.0f64.min(1.0 / d_la.abs()).min(1.0 / d_lw.abs());
+        la += damp * d_la;
+        lw += damp * d_lw;
+        // the stick set keeps at least half the contact's span left by the two zones
+        la = la.min((1.0 - 0.5 * lw.exp()).ln());
+        if lw.exp() < W1_MIN || la.exp() < W1_MIN {
+            return Err(Error::NoConvergence(format!(
+                "exact unloading: an edge zone went below {W1_MIN:e}, thinner than the bases \
+                 resolve"
+            )));
+        }
+        s = at(la.exp(), Some(lw.exp()))?;
+        let last = (la.exp() * damp * d_la)
+            .abs()
+            .max((lw.exp() * damp * d_lw).abs());
+        let stalled = last > 0.5 * step;
+        step = last;
+        if step <= 0.1 * tol {
+            break;
+        }
+        if stalled {
+            if fresh {
+                break;
+            }
+            *jac = None;
+        }
+        fresh = false;
+    }
+    Ok(Level {
+        wa: la.exp(),
+        w2: Some(lw.exp()),
+        state: s,
+        step,
+        solves,
+    })
+}
+
+/// Fractions of a slip zone's width, from its stick end, at which [`Unloading::zone_slips`]
+/// reads the slip: log-spaced towards the contact's end, where the three-zone pattern first
+/// fails (section 13: at b* = 0.9 the leading zone's slip is negative from the corner to
+/// 0.01 .. 0.5 of its width, at the ply at Q = 0 over all of it), down to 1e-8 of it.
+pub(crate) const CHECK_FRACTIONS: [f64; 9] = [1e-8, 1e-6, 1e-4, 1e-2, 0.1, 0.3, 0.5, 0.7, 0.9];
+
+/// (offset of a point from its contact end, slip since Q* there) along a slip zone.
+pub(crate) type Slips = Vec<(f64, f64)>;
+
+/// The unloading state with error estimates.
+pub(crate) struct Unloading<'a> {
+    /// The loaded state at Q* (the data).
+    pub(crate) loaded: &'a Monotonic,
+    pub(crate) qp: f64,
+    pub(crate) level: Level,
+    /// Bounds on |a1 - a1_exact| + |a2 - a2_exact| and on the traction norm (T1) from the
+    /// ladder of levels (the loaded state held fixed; its own estimates are the data's).
+    pub(crate) c_error: f64,
+    pub(crate) traction_error: f64,
+    pub(crate) levels: usize,
+    pub(crate) solves: usize,
+    /// Per level after the first: (level, wa, w2, |dc| + steps, traction distance, solves).
+    pub(crate) trace: Vec<(usize, f64, f64, f64, f64, usize)>,
+}
+
+/// The unloading state at Q/P = qp (-mu < qp < Q*/P) from the loaded state `m`, a1, a2 to
+/// `tol` and the tractions to `traction_tol`, by the ladder of levels 1, 2, ... until two
+/// levels agree. The start: a1 of the grid LCP history at N = [`START_PANELS`] (loaded to
+/// Q* and unloaded in one step each); then, for bp > 0, w2 from the first sign change of the
+/// border value at a2, sigma_0 + sigma_1, at level 1 scanning w2 = 0.3, 0.03, ... down to
+/// [`W1_MIN`] (as the loading's scan of w1).
+pub(crate) fn unload<'a>(
+    m: &'a Monotonic,
+    qp: f64,
+    tol: f64,
+    traction_tol: f64,
+) -> Result<Unloading<'a>> {
+    check_load(m, qp)?;
+    let k = &m.k;
+    let q_star = m.qp();
+    let mut solves = 0;
+    let wa0 = {
+        let mut h = crate::lcp::history::History::new(k, START_PANELS)?;
+        h.load(q_star, 1)?;
+        h.load(qp, 1)?;
+        let a1 = h.state().stick.0;
+        if a1.is_finite() {
+            (1.0 + a1).clamp(0.5 / START_PANELS as f64, 1.5)
+        } else {
+            0.5 / START_PANELS as f64
+        }
+    };
+    let w2_0 = if k.bp == 0.0 {
+        None
+    } else {
+        let at = |w2: f64| -> Result<f64> {
+            let s = unload_fixed(m, wa0, Some(w2), qp, 1)?;
+            Ok(s.sigma[0] + s.sigma[1])
+        };
+        let mut hi = 0.3f64.min(0.5 * (2.0 - wa0));
+        let mut f_hi = at(hi).ok();
+        solves += 1;
+        let mut found = None;
+        while hi > W1_MIN {
+            let lo = 0.1 * hi;
+            let f_lo = at(lo).ok();
+            solves += 1;
+            if let (Some(a), Some(b)) = (f_lo, f_hi)
+                && a.signum() != b.signum()
+            {
+                found = Some((lo * hi).sqrt());
+                break;
+            }
+            (hi, f_hi) = (lo, f_lo);
+        }
+        Some(found.ok_or_else(|| {
+            Error::NoConvergence(format!(
+                "exact unloading: no trailing edge zone of width >= {W1_MIN:e} found"
+            ))
+        })?)
+    };
+    ladder(m, qp, tol, traction_tol, (wa0, w2_0), 1, solves)
+}
+
+/// Q/P must lie on the branch: -mu < Q/P < Q*/P, and below the first-slip load when bp = 0.
+fn check_load(m: &Monotonic, qp: f64) -> Result<()> {
+    let (k, q_star) = (&m.k, m.qp());
+    if !(qp < q_star && qp > -k.mu) {
+        return Err(Error::InvalidArgument(format!(
+            "exact unloading: needs -mu < Q/P < Q*/P (Q/P = {qp}, Q*/P = {q_star}, mu = {})",
+            k.mu
+        )));
+    }
+    if let Some(qs) = first_slip(m)
+        && qp >= qs
+    {
+        return Err(Error::InvalidArgument(format!(
+            "exact unloading: with bp = 0 the branch sticks fully down to Q_s/P = {qs} \
+             (q = q* + (Q - Q*)/P p0, docs/theory_tangential.md (T13)); Q/P = {qp} is above it"
+        )));
+    }
+    Ok(())
+}
+
+/// The unloading state at Q/P = qp from the answer `prev` at another load of the same
+/// branch (a warm start along a path): Newton from prev's (wa, w2), extrapolated linearly in
+/// Q (wa, and ln w2) when the answer `before` prev is given too; no grid start and no scan
+/// of w2; the ladder from level 1 (started at prev's last level but one, it took more time
+/// than the cold start on the ply: each solve at levels 4-5 costs several at levels 1-2,
+/// section 14), and the cold start [`unload`] if that ladder does not converge.
+pub(crate) fn unload_from<'a>(
+    prev: &Unloading<'a>,
+    before: Option<&Unloading<'a>>,
+    qp: f64,
+    tol: f64,
+    traction_tol: f64,
+) -> Result<Unloading<'a>> {
+    let m = prev.loaded;
+    check_load(m, qp)?;
+    let (wa, w2) = (prev.level.wa, prev.level.w2);
+    let start = match before {
+        Some(b) if b.qp != prev.qp => {
+            let r = (qp - prev.qp) / (prev.qp - b.qp);
+            // wa linearly (it grows fast at the phase's start, where ln wa would overshoot),
+            // kept within a factor 2 of prev's; the thin w2 in its logarithm
+            let wa_next = (wa + r * (wa - b.level.wa)).clamp(0.5 * wa, (2.0 * wa).min(1.9));
+            let ln_next = |now: f64, then: f64| (now.ln() + r * (now.ln() - then.ln())).exp();
+            (wa_next, w2.zip(b.level.w2).map(|(n, t)| ln_next(n, t)))
+        }
+        _ => (wa, w2),
+    };
+    // a start that fails (no convergence near the ply's noise floor, or a prediction off the
+    // contact) falls back to the cold start
+    match ladder(m, qp, tol, traction_tol, start, 1, 0) {
+        Err(Error::NoConvergence(_) | Error::InvalidArgument(_)) => {
+            unload(m, qp, tol, traction_tol)
+        }
+        other => other,
+    }
+}
+
+/// The ladder of levels `first`, `first` + 1, ... up to [`MAX_LEVEL`] from (wa, w2), until
+/// two levels agree; the answer is checked for admissibility.
+fn ladder<'a>(
+    m: &'a Monotonic,
+    qp: f64,
+    tol: f64,
+    traction_tol: f64,
+    start: (f64, Option<f64>),
+    first: usize,
+    mut solves: usize,
+) -> Result<Unloading<'a>> {
+    let g = edge_exponent(&m.k);
+    let mut jac = None;
+    let mut trace = Vec::new();
+    let mut prev: Option<Level> = None;
+    let (mut wa, mut w2) = start;
+    for level in first..=MAX_LEVEL {
+        let l = unload_level(m, wa, w2, qp, level, tol, &mut jac)?;
+        solves += l.solves;
+        (wa, w2) = (l.wa, l.w2);
+        if let Some(p) = &prev {
+            let dc = (l.wa - p.wa).abs()
+                + (l.w2.unwrap_or(0.0) - p.w2.unwrap_or(0.0)).abs()
+                + l.step
+                + p.step;
+            let dt = distance(g, &l.state, &p.state);
+            let (c_error, traction_error) = (SAFETY * dc, SAFETY * dt);
+            trace.push((level, l.wa, l.w2.unwrap_or(0.0), dc, dt, l.solves));
+            if c_error <= tol && traction_error <= traction_tol {
+                let u = Unloading {
+                    loaded: m,
+                    qp,
+                    level: l,
+                    c_error,
+                    traction_error,
+                    levels: level,
+                    solves,
+                    trace,
+                };
+                return u.admissible().map(|()| u);
+            }
+        }
+        prev = Some(l);
+    }
+    let last = trace
+        .last()
+        .map_or((f64::NAN, f64::NAN, f64::NAN), |t| (t.1, t.3, t.4));
+    Err(Error::NoConvergence(format!(
+        "exact unloading: levels {first}-{MAX_LEVEL} did not agree to {tol:e} (a1, a2) and \
+         {traction_tol:e} (tractions): the last two moved them by {:e} and {:e} (1 + a1 = {})",
+        last.1, last.2, last.0
+    )))
+}
+
+impl Unloading<'_> {
+    /// Err(NoAdmissibleSolution) when a slip zone slips against its friction ((T5); the
+    /// three-zone pattern does not hold there, section 13).
+    pub(crate) fn admissible(&self) -> Result<()> {
+        let (leading, trailing) = self.zone_slips();
+        if let Some((o, s)) = leading.iter().find(|(_, s)| *s <= 0.0) {
+            return Err(Error::NoAdmissibleSolution(format!(
+                "exact unloading at Q/P = {}: the leading zone (-1, {}) slips against q = -mu p \
+                 (slip {s:e} at 1 + x = {o:e}); the corner does not follow the three-zone \
+                 pattern here (docs/theory_tangential.md section 13)",
+                self.qp,
+                self.level.wa - 1.0
+            )));
+        }
+        if let Some((o, s)) = trailing.iter().find(|(_, s)| *s >= 0.0) {
+            return Err(Error::NoAdmissibleSolution(format!(
+                "exact unloading at Q/P = {}: the trailing zone slips against q = +mu p \
+                 (slip {s:e} at 1 - x = {o:e})",
+                self.qp
+            )));
+        }
+        Ok(())
+    }
+
+    /// (a1, a2), the stick set.
+    pub(crate) fn stick_set(&self) -> (f64, f64) {
+        (self.level.wa - 1.0, 1.0 - self.level.w2.unwrap_or(0.0))
+    }
+
+    /// (p, q) at x given by (1 + x, 1 - x).
+    pub(crate) fn tractions(&self, opx: f64, omx: f64) -> (f64, f64) {
+        self.level.state.tractions(opx, omx)
+    }
+
+    /// The slip's slope relative to the punch since Q*, per pi B P:
+    /// -(bq (p - p*) + H[q] - H[q*]) (zero on the stick set).
+    pub(crate) fn slip_slope(&self, opx: f64, omx: f64) -> f64 {
+        let s = &self.level.state;
+        let l = s.frame.locate(opx, omx);
+        let (p, _) = s.tractions_at(&l);
+        let (_, hq) = s.hilbert_at(&l);
+        let loaded = &self.loaded.level.state;
+        let ls = loaded.frame.locate(opx, omx);
+        let (ps, _) = loaded.tractions_at(&ls);
+        let (_, hqs) = loaded.hilbert_at(&ls);
+        -(self.loaded.k.bq * (p - ps) + hq - hqs)
+    }
+
+    /// The slip since Q* at x (per pi B P), integrated from the nearer stick end by
+    /// Gauss-Legendre graded towards both ends of each piece (the loaded state's kinks inside
+    /// the leading zone are breakpoints too); 0 on the stick set. The trailing zone is
+    /// integrated in 1 - x, so that points within rounding of +1 keep their offsets.
+    pub(crate) fn slip(&self, opx: f64, omx: f64) -> f64 {
+        let (wa, w2) = (self.level.wa, self.level.w2.unwrap_or(0.0));
+        if opx < wa {
+            // s(x) = -int_x^{a1} slope, in 1 + x
+            let mut cuts = vec![opx, wa];
+            for c in kinks(self.loaded) {
+                if c.opx > opx && c.opx < wa {
+                    cuts.push(c.opx);
+                }
+            }
+            cuts.sort_by(|a, b| a.total_cmp(b));
+            -cuts
+                .windows(2)
+                .map(|w| graded(w[0], w[1], &|o| self.slip_slope(o, 2.0 - o)))
+                .sum::<f64>()
+        } else if omx < w2 {
+            // s(x) = int_{a2}^x slope = int_{1 - x}^{w2} slope d(1 - x)
+            graded(omx, w2, &|r| self.slip_slope(2.0 - r, r))
+        } else {
+            0.0
+        }
+    }
+
+    /// The slip since Q* at 1 + x = f wa in the leading zone for each fraction f of
+    /// [`CHECK_FRACTIONS`] (one running integral from a1 towards -1), and at 1 - x = f w2 in
+    /// the trailing zone: (leading, trailing). By (T5) the first must be > 0 (q = -mu p) and
+    /// the second < 0 (q = +mu p).
+    pub(crate) fn zone_slips(&self) -> (Slips, Slips) {
+        let (wa, w2) = (self.level.wa, self.level.w2.unwrap_or(0.0));
+        let mut marks: Vec<f64> = CHECK_FRACTIONS.iter().map(|f| f * wa).collect();
+        for c in kinks(self.loaded) {
+            if c.opx < wa {
+                marks.push(c.opx);
+            }
+        }
+        marks.push(wa);
+        marks.sort_by(|a, b| b.total_cmp(a));
+        let mut running = 0.0;
+        let mut leading = Vec::new();
+        for w in marks.windows(2) {
+            running -= graded(w[1], w[0], &|o| self.slip_slope(o, 2.0 - o));
+            if CHECK_FRACTIONS.iter().any(|f| f * wa == w[1]) {
+                leading.push((w[1], running));
+            }
+        }
+        let trailing = if w2 > 0.0 {
+            CHECK_FRACTIONS
+                .iter()
+                .map(|f| (f * w2, self.slip(2.0 - f * w2, f * w2)))
+                .collect()
+        } else {
+            Vec::new()
+        };
+        (leading, trailing)
+    }
+
+    /// mu int p s over the leading zone (per pi B P^2): the energy the slip since Q* would
+    /// have dissipated under the present pressure, by parts as [`dissipation`].
+    pub(crate) fn slip_work(&self) -> f64 {
+        let k = &self.loaded.k;
+        let wa = self.level.wa;
+        let mut cuts = vec![0.0, wa];
+        for c in kinks(self.loaded) {
+            if c.opx > 0.0 && c.opx < wa {
+                cuts.push(c.opx);
+            }
+        }
+        cuts.sort_by(f64::total_cmp);
+        let m = |o: f64| k.mu * self.tractions(o, 2.0 - o).0;
+        by_parts(edge_exponent(k), &cuts, &m, &|o| {
+            self.slip_slope(o, 2.0 - o)
+        })
+    }
+
+    /// int x p dx, the moment the guided punch carries (per P a).
+    pub(crate) fn moment(&self) -> f64 {
+        let s = &self.level.state;
+        contact_rule(edge_exponent(&self.loaded.k), s, s)
+            .into_iter()
+            .map(|(opx, omx, w)| {
+                let x = if opx < omx { opx - 1.0 } else { 1.0 - omx };
+                w * x * s.tractions(opx, omx).0
+            })
+            .sum()
+    }
+}
+
+/// int_a^b f by 16-point Gauss-Legendre on pieces graded geometrically (ratio 0.1, 11
+/// levels) towards both ends, where the slip's slope carries the zone ends' exponents.
+fn graded(a: f64, b: f64, f: &dyn Fn(f64) -> f64) -> f64 {
+    use crate::numerics::quadrature::gauss_legendre;
+    let (xs, ws) = gauss_legendre(16);
+    let len = b - a;
+    let mut pieces = vec![0.0];
+    for j in (1..12).rev() {
+        pieces.push(0.5 * len * 0.1f64.powi(j));
+    }
+    pieces.push(0.5 * len);
+    for j in (1..12).rev() {
+        pieces.push(len - 0.5 * len * 0.1f64.powi(j));
+    }
+    pieces.push(len);
+    let mut total = 0.0;
+    for piece in pieces.windows(2) {
+        let (u, v) = (piece[0], piece[1]);
+        for (t, w) in xs.iter().zip(&ws) {
+            let s = u + 0.5 * (v - u) * (1.0 + t);
+            // from the nearer end, so that offsets keep their digits
+            let x = if s < 0.5 * len { a + s } else { b - (len - s) };
+            total += 0.5 * (v - u) * w * f(x);
+        }
+    }
+    total
+}
+
+/// The energy dissipated in the leading zone between two states of the branch, `a` at the
+/// higher load and `b` at the lower (per unit thickness, in pi B P^2; (T8) with the mean of
+/// the two pressures, so second order in the load step): int mu p_mid (s_b - s_a) over
+/// (-1, a1_b). With o = 1 + x and the slip increment ds(o) = -int_o^{wa_b} dslope (zero at
+/// a1_b), integration by parts gives -int_0^{wa_b} dslope(o) M(o) do, M(o) = int_0^o mu p_mid,
+/// where dslope = -(bq (p_b - p_a) + H[q_b] - H[q_a]) needs no loaded state.
+pub(crate) fn dissipation(a: &Unloading, b: &Unloading) -> f64 {
+    let k = &a.loaded.k;
+    let (sa, sb) = (&a.level.state, &b.level.state);
+    let mut cuts = vec![0.0, a.level.wa, b.level.wa];
+    for c in kinks(a.loaded) {
+        if c.opx > 0.0 && c.opx < b.level.wa {
+            cuts.push(c.opx);
+        }
+    }
+    cuts.sort_by(f64::total_cmp);
+    cuts.dedup();
+    let m = |o: f64| {
+        let (pa, _) = sa.tractions(o, 2.0 - o);
+        let (pb, _) = sb.tractions(o, 2.0 - o);
+        0.5 * k.mu * (pa + pb)
+    };
+    let dslope = |o: f64| {
+        let (la, lb) = (sa.frame.locate(o, 2.0 - o), sb.frame.locate(o, 2.0 - o));
+        let (pa, _) = sa.tractions_at(&la);
+        let (pb, _) = sb.tractions_at(&lb);
+        let (_, ha) = sa.hilbert_at(&la);
+        let (_, hb) = sb.hilbert_at(&lb);
+        -(k.bq * (pb - pa) + hb - ha)
+    };
+    by_parts(edge_exponent(k), &cuts, &m, &dslope)
+}
+
+/// -int_0^{cuts.last} f(o) M(o) do with M(o) = int_0^o m: [`graded_rule`]'s panels on each
+/// piece between cuts (f and m carry power singularities at the cuts), M accumulated between
+/// consecutive nodes by 8-point Gauss-Legendre, and from 0 to the first node by Gauss-Jacobi
+/// with m's weight o^-g taken out.
+///
+/// [`graded_rule`]: crate::numerics::quadrature::graded_rule
+fn by_parts(g: f64, cuts: &[f64], m: &dyn Fn(f64) -> f64, f: &dyn Fn(f64) -> f64) -> f64 {
+    use crate::numerics::quadrature::{gauss_jacobi, gauss_legendre, graded_rule};
+    let (jx, jw) = gauss_jacobi(8, 0.0, -g);
+    let (lx, lw) = gauss_legendre(8);
+    let (mut acc, mut prev, mut total) = (0.0, 0.0, 0.0);
+    for piece in cuts.windows(2) {
+        // panels shrinking by 0.1 towards both ends, down to 1e-15 of the half piece
+        for (o, wt) in graded_rule(piece[0], piece[1], 0.1, 1e-15, 16) {
+            let h = 0.5 * (o - prev);
+            acc += if prev == 0.0 {
+                // int_0^o m = h int_{-1}^{1} m(h (1 + t)) (1 + t)^g (1 + t)^-g dt, h = o/2,
+                // the last factor the rule's weight
+                jx.iter()
+                    .zip(&jw)
+                    .map(|(t, w)| {
+                        let s = h * (1.0 + t);
+                        h * w * m(s) * (1.0 + t).powf(g)
+                    })
+                    .sum::<f64>()
+            } else {
+                lx.iter()
+                    .zip(&lw)
+                    .map(|(t, w)| h * w * m(prev + h * (1.0 + t)))
+                    .sum::<f64>()
+            };
+            prev = o;
+            total -= wt * f(o) * acc;
+        }
+    }
+    total
+}

@@ -1,0 +1,623 @@
+//! Checks of the exact unloading branch against independent references: the closed form
+//! (T13) of the bp = 0 limit (a quadrature and a secant of its own), the grid LCP history
+//! (loaded to Q*, then unloaded) run here at N = 100 and 200 and extrapolated in N,
+//! equilibrium by a quadrature of the returned tractions, the residuals of (U1)-(U2) at
+//! points between the collocation points, and the inequalities; the grid's corner layer at
+//! strong coupling, where the three-zone pattern is refused (docs/theory_tangential.md
+//! section 13); the dissipation of the first unloading against the grid's (section 14).
+
+use super::super::frame::Loc;
+use super::super::{contact_rule, monotonic};
+use super::*;
+use crate::Material;
+use crate::lcp::history::{History, Zone};
+use crate::numerics::quadrature::gauss_jacobi;
+
+fn ply() -> Coupling {
+    Material::plane_stress(181e9, 10.3e9, 7.17e9, 0.28)
+        .unwrap()
+        .coupling(0.3)
+}
+
+fn strong() -> Coupling {
+    Coupling {
+        bp: 0.9,
+        bq: 0.9,
+        mu: 1.0,
+    }
+}
+
+/// The grid LCP history at N panels per half-width: loaded to Q* and unloaded to Q in 5
+/// steps each (both end states are path-independent, section 13).
+fn grid(k: &Coupling, n: usize, q_star: f64, qp: f64) -> History {
+    let mut h = History::new(k, n).unwrap();
+    h.load(q_star, 5).unwrap();
+    h.load(qp, 5).unwrap();
+    h
+}
+
+/// (T13) of docs/theory_tangential.md for bp = 0 and a1 below the loaded c2*:
+/// (Q* - Q)/P = int_{-1}^{a1} (mu p0 + q*) sqrt((1 - s)/(a1 - s)) ds, by Gauss-Jacobi with
+/// the weight ((a1 - s)(1 + s))^(-1/2) (mu p0 + q* carries (1 + s)^(-1/2) and is analytic
+/// inside the loaded stick set); p0 = 1/(pi sqrt(1 - s^2)), q* from the loading solver.
+fn t13(m: &Monotonic, a1: f64) -> f64 {
+    let (t, w) = gauss_jacobi(40, -0.5, -0.5);
+    t.iter()
+        .zip(&w)
+        .map(|(t, w)| {
+            let opx = 0.5 * (1.0 + a1) * (1.0 + t);
+            let omx = 2.0 - opx;
+            let p0 = 1.0 / (std::f64::consts::PI * (opx * omx).sqrt());
+            let (_, q) = m.tractions(opx, omx);
+            w * (m.k.mu * p0 + q) * opx.sqrt() * omx.sqrt()
+        })
+        .sum()
+}
+
+/// bp = 0: no trailing zone; a1 is (T13)'s root; the first slip at -1 comes at
+/// Q_s = Q* - P (mu + q*/p0 at x = -1), where (T13)'s integral tends to mu + q*/p0.
+#[test]
+fn goodman_limit_matches_the_closed_form() {
+    let k = Coupling { bp: 0.0, ..ply() };
+    let q_star = 0.18;
+    let m = monotonic(&k, q_star, 1e-11, 1e-9).unwrap();
+    let (_, c2_star) = m.stick_set();
+    for frac in [-0.6, -0.8] {
+        let qp = frac * q_star;
+        let u = unload(&m, qp, 1e-11, 1e-9).unwrap();
+        assert_eq!(u.level.w2, None);
+        let (a1, a2) = u.stick_set();
+        assert_eq!(a2, 1.0);
+        assert!(a1 < c2_star);
+        // (T13)'s root by the secant method, from 0.01 either side of the solver's
+        let (mut a, mut b) = (a1 - 0.01, a1 + 0.01);
+        let (mut fa, mut fb) = (t13(&m, a) - (q_star - qp), t13(&m, b) - (q_star - qp));
+        for _ in 0..40 {
+            if fb == fa || (b - a).abs() < 1e-14 {
+                break;
+            }
+            let next = b - fb * (b - a) / (fb - fa);
+            (a, fa) = (b, fb);
+            b = next;
+            fb = t13(&m, b) - (q_star - qp);
+        }
+        assert!(
+            (a1 - b).abs() < 1e-9 && u.c_error < 1e-10,
+            "Q/Q* = {frac}: a1 = {a1} against (T13)'s {b} (estimate {:e})",
+            u.c_error
+        );
+    }
+    // the first-slip load: (T13)'s integral as a1 -> -1; above it the branch is refused
+    let qs = first_slip(&m).unwrap();
+    let limit = q_star - qs;
+    assert!(matches!(
+        unload(&m, qs + 1e-3, 1e-10, 1e-8),
+        Err(Error::InvalidArgument(_))
+    ));
+    let near = t13(&m, -1.0 + 1e-10);
+    assert!(
+        (near - limit).abs() < 1e-4 * limit,
+        "(T13) at a1 = -1 + 1e-10: {near}, mu + q*/p0 = {limit}"
+    );
+}
+
+/// The ply, Q* = 0.6 mu P, unloaded to -Q*: a1 against the grid LCP history extrapolated
+/// from N = 100, 200 and against section 8's reference (-0.2636, from N = 400, 800); the
+/// trailing edge zone as thin as the loading's edge zone.
+#[test]
+fn ply_matches_the_lcp_history() {
+    let k = ply();
+    let q_star = 0.18;
+    let m = monotonic(&k, q_star, 1e-10, 1e-6).unwrap();
+    let u = unload(&m, -q_star, 1e-8, 1e-5).unwrap();
+    let (a1, a2) = u.stick_set();
+    let (g1, g2) = (
+        grid(&k, 100, q_star, -q_star).state().stick,
+        grid(&k, 200, q_star, -q_star).state().stick,
+    );
+    assert_eq!(
+        (g1.1, g2.1),
+        (1.0, 1.0),
+        "the grid resolves no trailing zone"
+    );
+    let extrapolated = 2.0 * g2.0 - g1.0;
+    assert!(
+        (a1 - extrapolated).abs() < 0.2 * (g2.0 - g1.0).abs() && (a1 + 0.2636).abs() < 3e-5,
+        "a1 = {a1} against the grid's {} (N = 100), {} (N = 200), extrapolated {extrapolated}",
+        g1.0,
+        g2.0
+    );
+    let w2 = 1.0 - a2;
+    assert!(w2 > 1e-6 && w2 < 2e-6, "w2 = {w2:e}");
+    assert!(u.c_error < 1e-8 && u.traction_error < 1e-5);
+}
+
+/// The local structure (section 13), fitted on the ply at -Q* by the log-slope between two
+/// distances: q + mu p ~ d^g on the stick side of a1, mu p - q ~ d^g on the stick side of
+/// a2, and p ~ d^-g at both ends of the contact (leading zone at -1, trailing zone at +1).
+/// The moment int x p the guided punch carries, against the grid's extrapolated in N.
+#[test]
+fn local_exponents_and_moment() {
+    let k = ply();
+    let q_star = 0.18;
+    let m = monotonic(&k, q_star, 1e-10, 1e-6).unwrap();
+    let u = unload(&m, -q_star, 1e-8, 1e-5).unwrap();
+    let g = edge_exponent(&k);
+    let (a1, a2) = u.stick_set();
+    let w2 = 1.0 - a2;
+    let slope =
+        |f: &dyn Fn(f64) -> f64, d0: f64, d1: f64| (f(d1) / f(d0)).abs().ln() / (d1 / d0).ln();
+    let at_x = |x: f64| u.tractions(1.0 + x, 1.0 - x);
+    let lead = |d: f64| {
+        let (p, q) = at_x(a1 + d);
+        q + k.mu * p
+    };
+    let trail = |d: f64| {
+        let (p, q) = u.tractions(2.0 - (w2 + d), w2 + d);
+        k.mu * p - q
+    };
+    let left = |d: f64| u.tractions(d, 2.0 - d).0;
+    let right = |d: f64| u.tractions(2.0 - d, d).0;
+    let fits = [
+        ("q + mu p at a1", slope(&lead, 1e-8, 1e-6), g),
+        ("mu p - q at a2", slope(&trail, 1e-8 * w2, 1e-6 * w2), g),
+        ("p at -1", slope(&left, 1e-12, 1e-10), -g),
+        ("p at +1", slope(&right, 1e-8 * w2, 1e-6 * w2), -g),
+    ];
+    for (name, fit, want) in fits {
+        assert!(
+            (fit - want).abs() < 1e-3,
+            "{name}: fitted {fit} against {want}"
+        );
+    }
+    let moment = |n: usize| grid(&k, n, q_star, -q_star).moment();
+    let (a, b) = (moment(100), moment(200));
+    let extrapolated = 2.0 * b - a;
+    assert!(
+        (u.moment() - extrapolated).abs() < 0.25 * (b - a).abs(),
+        "moment {} against the grid's {a}, {b} (extrapolated {extrapolated})",
+        u.moment()
+    );
+}
+
+/// int p = 1 and int q = Q/P by a quadrature of the returned tractions; the residuals of
+/// (U1) and (U2) at points midway between collocation points; p > 0 and |q| <= mu p on the
+/// stick set; the slip since Q* with the sign of its zone's friction ((T5), at the
+/// fractions of [`CHECK_FRACTIONS`] of each zone).
+#[test]
+fn equilibrium_residuals_and_inequalities() {
+    let goodman = Coupling { bp: 0.0, ..ply() };
+    // (the ply's loaded state answers to 1e-6 in the tractions, section 12)
+    for (k, q_star, qp, loaded_tol, tols, res_tol) in [
+        (ply(), 0.18, -0.18, 1e-6, (1e-8, 1e-5), 1e-6),
+        (goodman, 0.18, -0.108, 1e-9, (1e-11, 1e-9), 1e-9),
+    ] {
+        let m = monotonic(&k, q_star, 1e-10, loaded_tol).unwrap();
+        let u = unload(&m, qp, tols.0, tols.1).unwrap();
+        let g = edge_exponent(&k);
+        let s = &u.level.state;
+        let (mut ip, mut iq) = (0.0, 0.0);
+        for (opx, omx, w) in contact_rule(g, s, s) {
+            let (p, q) = u.tractions(opx, omx);
+            ip += w * p;
+            iq += w * q;
+        }
+        assert!(
+            (ip - 1.0).abs() < 1e-9 && (iq - qp).abs() < 1e-9,
+            "int p = {ip}, int q = {iq}"
+        );
+        let loaded = &m.level.state;
+        let f = &s.frame;
+        let mut worst = 0.0f64;
+        for zone in 0..f.zone_count() {
+            let len = f.zone_len(zone);
+            for i in 0..37 {
+                let th = (i as f64 + 1.0) * std::f64::consts::PI / 38.0;
+                let (a, b) = ((0.5 * th).sin().powi(2), (0.5 * th).cos().powi(2));
+                let l = Loc {
+                    zone,
+                    from_lo: len * a,
+                    to_hi: len * b,
+                };
+                let (opx, omx) = f.offsets(&l);
+                let (p, q) = s.tractions_at(&l);
+                let (hp, hq) = s.hilbert_at(&l);
+                let scale = if k.bp > 0.0 { k.bp * k.mu * p } else { p };
+                worst = worst.max((hp - k.bp * q).abs() / scale);
+                if f.is_stick(zone) {
+                    let ls = loaded.frame.locate(opx, omx);
+                    let (ps, _) = loaded.tractions_at(&ls);
+                    let (_, hqs) = loaded.hilbert_at(&ls);
+                    let r2 = (hq + k.bq * p - hqs - k.bq * ps).abs() / (k.bq * p);
+                    worst = worst.max(r2);
+                    assert!(q.abs() <= k.mu * p * (1.0 + 1e-9), "|q| > mu p at {opx}");
+                }
+                assert!(p > 0.0);
+            }
+        }
+        println!("bp = {}: largest relative residual {worst:e}", k.bp);
+        assert!(worst < res_tol, "largest relative residual {worst:e}");
+        let (leading, trailing) = u.zone_slips();
+        assert!(leading.iter().all(|(_, s)| *s > 0.0), "{leading:?}");
+        assert!(trailing.iter().all(|(_, s)| *s < 0.0), "{trailing:?}");
+    }
+}
+
+/// b* = 0.9, mu = 1, Q* = 0.3 mu P unloaded to Q = 0: the grid keeps a layer of nodes at the
+/// corner x = -1 stuck since Q* inside the leading slip zone, and the three-zone solution
+/// slips backwards there (against q = -mu p): it is refused.
+#[test]
+fn strong_coupling_corner_is_refused() {
+    let k = strong();
+    let q_star = 0.3;
+    let h = grid(&k, 200, q_star, 0.0);
+    let st = h.state();
+    // since Q*: the first panels stick, the next ones slip in +x (q = -mu p)
+    let mut star = History::new(&k, 200).unwrap();
+    star.load(q_star, 5).unwrap();
+    let since: Vec<f64> = st
+        .relative()
+        .iter()
+        .zip(star.state().relative())
+        .map(|(a, b)| a - b)
+        .collect();
+    assert!(since[0].abs() < 1e-12 && since[1].abs() < 1e-12 && since[5] > 1e-4);
+    assert!(
+        st.zones[0] == Zone::Stick && st.zones[5] == Zone::SlipPositive,
+        "the last step: {:?}",
+        &st.zones[..8]
+    );
+    let m = monotonic(&k, q_star, 1e-10, 1e-8).unwrap();
+    match unload(&m, 0.0, 1e-10, 1e-8) {
+        Err(Error::NoAdmissibleSolution(msg)) => assert!(msg.contains("leading zone"), "{msg}"),
+        Err(e) => panic!("refused for another reason: {e}"),
+        Ok(u) => panic!("answered: stick set {:?}", u.stick_set()),
+    }
+}
+
+/// Q/P outside (-mu, Q*/P) is refused.
+#[test]
+fn loads_outside_the_branch_are_refused() {
+    let k = Coupling { bp: 0.0, ..ply() };
+    let m = monotonic(&k, 0.18, 1e-10, 1e-8).unwrap();
+    for qp in [0.18, 0.2, -0.3, -0.5] {
+        assert!(matches!(
+            unload(&m, qp, 1e-10, 1e-8),
+            Err(Error::InvalidArgument(_))
+        ));
+    }
+}
+
+/// The grid LCP history on the ply for N = 100 .. 800 (one history per N, loaded to Q* and
+/// unloaded to -0.6 Q* and on to -Q*, the branch being path-independent) against the exact
+/// a1 (about a minute; the figures of docs/theory_tangential.md section 14).
+#[test]
+#[ignore]
+fn lcp_sequence_on_the_ply() {
+    let k = ply();
+    let q_star = 0.18;
+    let m = monotonic(&k, q_star, 1e-10, 1e-6).unwrap();
+    let exact: Vec<f64> = [-0.6, -1.0]
+        .iter()
+        .map(|f| unload(&m, f * q_star, 1e-8, 1e-5).unwrap().stick_set().0)
+        .collect();
+    let mut prev = [f64::INFINITY; 2];
+    for n in [100, 200, 400, 800] {
+        let t = std::time::Instant::now();
+        let mut h = History::new(&k, n).unwrap();
+        h.load(q_star, 5).unwrap();
+        let mut d = [0.0; 2];
+        for (i, f) in [-0.6, -1.0].iter().enumerate() {
+            h.load(f * q_star, 5).unwrap();
+            let (g1, g2) = h.state().stick;
+            assert_eq!(g2, 1.0);
+            d[i] = (g1 - exact[i]).abs();
+            println!(
+                "N = {n}, Q/Q* = {f}: grid a1 {g1:.6}, exact {:.10}, apart {:.2e}",
+                exact[i], d[i]
+            );
+        }
+        println!("  ({:.1} s)", t.elapsed().as_secs_f64());
+        assert!(d[0] < prev[0] && d[1] < prev[1], "N = {n}: no nearer");
+        prev = d;
+    }
+}
+
+/// Cost and accuracy of the unloading solve, and where along the ply's branch the
+/// three-zone pattern starts to hold (docs/theory_tangential.md section 14).
+#[test]
+#[ignore]
+fn measure_unloading() {
+    let goodman = Coupling { bp: 0.0, ..ply() };
+    let scenes = [
+        (
+            "ply",
+            ply(),
+            0.18,
+            1e-6,
+            vec![-0.5, -0.6, -0.8, -1.0],
+            (1e-8, 1e-5),
+        ),
+        (
+            "bp=0 (ply's bq)",
+            goodman,
+            0.18,
+            1e-9,
+            vec![-0.6, -0.8],
+            (1e-10, 1e-8),
+        ),
+    ];
+    for (name, k, q_star, loaded_tol, fracs, (tc, tt)) in scenes {
+        let t = std::time::Instant::now();
+        let m = monotonic(&k, q_star, 1e-10, loaded_tol).unwrap();
+        println!(
+            "{name} loaded to Q*/P = {q_star}: {:.0} ms, estimates ({:.1e}, {:.1e})",
+            t.elapsed().as_secs_f64() * 1e3,
+            m.c_error,
+            m.traction_error
+        );
+        for f in fracs {
+            let t = std::time::Instant::now();
+            match unload(&m, f * q_star, tc, tt) {
+                Ok(u) => {
+                    let el = t.elapsed().as_secs_f64() * 1e3;
+                    let (a1, a2) = u.stick_set();
+                    println!(
+                        "  Q/Q* {f}: a1 {a1:.10} 1 - a2 {:.4e} est ({:.1e}, {:.1e}) levels {} \
+                         solves {} unknowns {} {el:.0} ms",
+                        1.0 - a2,
+                        u.c_error,
+                        u.traction_error,
+                        u.levels,
+                        u.solves,
+                        u.level.state.frame.len()
+                    );
+                    for tr in &u.trace {
+                        println!("    {tr:?}");
+                    }
+                }
+                Err(e) => println!("  Q/Q* {f}: {e}"),
+            }
+        }
+    }
+    // bp = 0: the first-slip load Q_s = Q* - P (mu + q*/p0 at x = -1) (T13)
+    let k = Coupling { bp: 0.0, ..ply() };
+    let m = monotonic(&k, 0.18, 1e-11, 1e-9).unwrap();
+    let (p, q) = m.tractions(1e-12, 2.0 - 1e-12);
+    println!(
+        "bp=0: q*/p0 at -1 = {}, Q_s/P = {:?}",
+        q / p,
+        first_slip(&m)
+    );
+    for n in [100, 200, 400] {
+        // the grid's corner panel reaches -mu p between these loads
+        let mut h = History::new(&k, n).unwrap();
+        h.load(0.18, 5).unwrap();
+        let st = h.state();
+        println!("  N = {n}: corner panel q/p at Q* {}", st.q[0] / st.p[0]);
+    }
+    // the ply's first admissible load, by bisection on the refusal
+    let k = ply();
+    let m = monotonic(&k, 0.18, 1e-10, 1e-6).unwrap();
+    let (mut hi, mut lo) = (-0.3, -0.6);
+    for _ in 0..6 {
+        let mid = 0.5 * (hi + lo);
+        match unload(&m, mid * 0.18, 1e-7, 1e-4) {
+            Ok(u) => {
+                println!("  Q/Q* {mid}: admissible, a1 = {:.6}", u.stick_set().0);
+                lo = mid;
+            }
+            Err(e) => {
+                println!("  Q/Q* {mid}: {e}");
+                hi = mid;
+            }
+        }
+    }
+}
+
+/// The pattern on the grid (docs/theory_tangential.md section 13): per scene, the nodes
+/// that slipped since Q* on the way to Q, and the one-step against ten-step end state.
+#[test]
+#[ignore]
+fn pattern_on_the_grid() {
+    let scenes = [
+        ("ply", ply(), 0.18),
+        ("b*=0.9", strong(), 0.3),
+        ("bp=0", Coupling { bp: 0.0, ..ply() }, 0.18),
+    ];
+    for (name, k, q_star) in scenes {
+        // (docs/theory_tangential.md section 13 quotes N = 400 too: the same run with
+        // [200, 400], 3.5 min)
+        for n in [200] {
+            let mut star = History::new(&k, n).unwrap();
+            star.load(q_star, 5).unwrap();
+            let r_star = star.state().relative();
+            for frac in [0.9, 0.0, -0.5, -1.0] {
+                let mut h = History::new(&k, n).unwrap();
+                h.load(q_star, 5).unwrap();
+                let st = h.load(frac * q_star, 10).unwrap();
+                let last = st.last().unwrap();
+                let mut one = History::new(&k, n).unwrap();
+                one.load(q_star, 5).unwrap();
+                let one = one.load(frac * q_star, 1).unwrap().pop().unwrap();
+                let dq = one
+                    .q
+                    .iter()
+                    .zip(&last.q)
+                    .map(|(a, b)| (a - b).abs())
+                    .fold(0.0, f64::max);
+                let since: Vec<f64> = last
+                    .relative()
+                    .iter()
+                    .zip(&r_star)
+                    .map(|(a, b)| a - b)
+                    .collect();
+                let marks: String = since
+                    .iter()
+                    .map(|s| {
+                        if *s > 1e-11 {
+                            '+'
+                        } else if *s < -1e-11 {
+                            '-'
+                        } else {
+                            '.'
+                        }
+                    })
+                    .collect();
+                let lead = marks.chars().take_while(|c| *c == '.').count();
+                let plus = marks[lead..].chars().take_while(|c| *c == '+').count();
+                let minus = marks.chars().rev().take_while(|c| *c == '-').count();
+                println!(
+                    "{name} N = {n} Q/Q* = {frac}: stick {:?}; corner nodes stuck since Q* {lead}, \
+                     then + {plus}; trailing - {minus}; one step against ten: {dq:.1e}",
+                    last.stick
+                );
+            }
+        }
+    }
+}
+
+/// The dissipation of the ply's first unloading Q* -> -Q* (Q* = 0.6 mu P) from the exact
+/// branch, against the grid LCP history's (N = 200, 20, 40 and 80 steps, extrapolated in
+/// the steps with order 1; docs/theory_tangential.md section 14): the three-zone phase from
+/// -0.485 Q* on, summed over 8 and 4 load steps with [`dissipation`] (second order in the
+/// step) and extrapolated; the part before is of the order of the slip work at -0.485 Q*.
+#[test]
+#[ignore]
+fn dissipation_of_the_first_unloading() {
+    let k = ply();
+    let q_star = 0.18;
+    let m = monotonic(&k, q_star, 1e-10, 1e-6).unwrap();
+    let t = std::time::Instant::now();
+    let q0 = -0.485 * q_star;
+    let n = 8;
+    let states: Vec<Unloading> = (0..=n)
+        .map(|j| {
+            let qp = q0 + (-q_star - q0) * j as f64 / n as f64;
+            unload(&m, qp, 1e-8, 1e-5).unwrap()
+        })
+        .collect();
+    let solved = t.elapsed().as_secs_f64();
+    let sum = |stride: usize| {
+        (0..n / stride)
+            .map(|j| dissipation(&states[j * stride], &states[(j + 1) * stride]))
+            .sum::<f64>()
+    };
+    let (w8, w4, w2) = (sum(1), sum(2), sum(4));
+    let exact = w8 + (w8 - w4) / 3.0;
+    let before = states[0].slip_work();
+    println!(
+        "exact, three-zone phase: W = {w2:.7e} (2 steps), {w4:.7e} (4), {w8:.7e} (8), \
+         extrapolated {exact:.7e}; slip work at -0.485 Q*: {before:.2e}; \
+         solves {solved:.1} s, sums {:.1} s",
+        t.elapsed().as_secs_f64() - solved
+    );
+    let grid_w = |steps: usize| {
+        let mut h = History::new(&k, 200).unwrap();
+        h.load(q_star, 5).unwrap();
+        h.load(-q_star, steps)
+            .unwrap()
+            .iter()
+            .map(|s| s.dissipation)
+            .sum::<f64>()
+    };
+    let (g20, g40, g80) = (grid_w(20), grid_w(40), grid_w(80));
+    let grid = 2.0 * g80 - g40;
+    println!(
+        "grid N = 200: W = {g20:.7e} (20 steps), {g40:.7e} (40), {g80:.7e} (80), \
+         extrapolated {grid:.7e}; exact - grid = {:.2e} ({:.2e} relative)",
+        exact - grid,
+        (exact - grid) / grid
+    );
+    assert!((exact - grid).abs() < 1e-3 * grid && (exact - grid).abs() < 3.0 * before);
+}
+
+/// A warm start from the answers at the two loads before on the branch (equal steps)
+/// gives the cold start's answer within the two answers' estimates (bp = 0, and the ply).
+#[test]
+fn warm_start_agrees_with_the_cold_start() {
+    let goodman = Coupling { bp: 0.0, ..ply() };
+    for (k, loaded_tol, tols, path) in [
+        (goodman, 1e-9, (1e-10, 1e-8), [-0.7, -0.75, -0.8]),
+        (ply(), 1e-6, (1e-8, 1e-5), [-0.8, -0.9, -1.0]),
+    ] {
+        let q_star = 0.18;
+        let m = monotonic(&k, q_star, 1e-10, loaded_tol).unwrap();
+        let a = unload(&m, path[0] * q_star, tols.0, tols.1).unwrap();
+        let b = unload(&m, path[1] * q_star, tols.0, tols.1).unwrap();
+        let to = path[2];
+        let cold = unload(&m, to * q_star, tols.0, tols.1).unwrap();
+        let warm = unload_from(&b, Some(&a), to * q_star, tols.0, tols.1).unwrap();
+        let (c, w) = (cold.stick_set(), warm.stick_set());
+        let g = edge_exponent(&k);
+        let dt = distance(g, &cold.level.state, &warm.level.state);
+        assert!(
+            (c.0 - w.0).abs() + (c.1 - w.1).abs() <= cold.c_error + warm.c_error
+                && dt <= cold.traction_error + warm.traction_error,
+            "cold {c:?}, warm {w:?} (estimates {:e}, {:e}); tractions {dt:e} apart",
+            cold.c_error,
+            warm.c_error
+        );
+        // (the solves are not always fewer: bp = 0 has no scan to skip, 12 warm against 11
+        // cold; at the ply the ladder's stop near the noise floor varies, 42 against 28 here
+        // and 21-43 against 28-50 along measure_warm_start's path)
+        println!("solves: warm {}, cold {}", warm.solves, cold.solves);
+    }
+}
+
+/// The time a warm start saves along the ply's branch (the 9 loads of
+/// `dissipation_of_the_first_unloading`; docs/theory_tangential.md section 14).
+#[test]
+#[ignore]
+fn measure_warm_start() {
+    let k = ply();
+    let q_star = 0.18;
+    let m = monotonic(&k, q_star, 1e-10, 1e-6).unwrap();
+    let q0 = -0.485 * q_star;
+    let loads: Vec<f64> = (0..=8)
+        .map(|j| q0 + (-q_star - q0) * j as f64 / 8.0)
+        .collect();
+    let t = std::time::Instant::now();
+    let cold: Vec<Unloading> = loads
+        .iter()
+        .map(|&qp| unload(&m, qp, 1e-8, 1e-5).unwrap())
+        .collect();
+    let t_cold = t.elapsed().as_secs_f64();
+    let t = std::time::Instant::now();
+    let mut warm = vec![unload(&m, loads[0], 1e-8, 1e-5).unwrap()];
+    for &qp in &loads[1..] {
+        let n = warm.len();
+        let before = (n >= 2).then(|| &warm[n - 2]);
+        let next = unload_from(&warm[n - 1], before, qp, 1e-8, 1e-5).unwrap();
+        warm.push(next);
+    }
+    let t_warm = t.elapsed().as_secs_f64();
+    let t = std::time::Instant::now();
+    for u in &cold {
+        u.admissible().unwrap();
+    }
+    let t_check = t.elapsed().as_secs_f64() / cold.len() as f64;
+    for (c, w) in cold.iter().zip(&warm) {
+        println!(
+            "Q/Q* {:.4}: cold a1 {:.10} ({} solves, level {}), warm a1 {:.10} ({} solves, level {}), \
+             apart {:.1e}",
+            c.qp / q_star,
+            c.stick_set().0,
+            c.solves,
+            c.levels,
+            w.stick_set().0,
+            w.solves,
+            w.levels,
+            (c.stick_set().0 - w.stick_set().0).abs()
+        );
+    }
+    let (sc, sw): (usize, usize) = (
+        cold.iter().map(|u| u.solves).sum(),
+        warm.iter().map(|u| u.solves).sum(),
+    );
+    println!(
+        "cold {t_cold:.1} s ({sc} solves), warm {t_warm:.1} s ({sw} solves); the admissibility \
+         check {:.0} ms per answer",
+        t_check * 1e3
+    );
+}
