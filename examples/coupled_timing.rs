@@ -3,31 +3,14 @@
 //! of the thread (the machine may be shared): the median over the repetitions.
 //! Optional argument: the number of repetitions per case (default 20). "cold": each
 //! repetition with its own edge exponent g (mu shifted by 1e-9).
+mod support;
+
 use orthoslip::Material;
 use orthoslip::coupled::solve;
 use orthoslip::problem::{Coupling, Profile};
+use support::clock::cpu_seconds;
 
 /// struct timespec of Linux (64-bit).
-#[repr(C)]
-struct Timespec {
-    sec: i64,
-    nsec: i64,
-}
-
-unsafe extern "C" {
-    fn clock_gettime(clock: i32, out: *mut Timespec) -> i32;
-}
-
-/// CPU time of this thread in seconds (CLOCK_THREAD_CPUTIME_ID = 3 on Linux; finer than
-/// /proc/thread-self/schedstat, which only advances at scheduler ticks).
-fn cpu_seconds() -> f64 {
-    let mut t = Timespec { sec: 0, nsec: 0 };
-    // SAFETY: clock_gettime writes one timespec to a valid pointer.
-    let rc = unsafe { clock_gettime(3, &mut t) };
-    assert_eq!(rc, 0, "clock_gettime");
-    t.sec as f64 + 1e-9 * t.nsec as f64
-}
-
 /// Median CPU time of f over `reps` calls (f gets the call's index).
 fn median_cpu(reps: usize, mut f: impl FnMut(usize)) -> f64 {
     let mut times: Vec<f64> = (0..reps)

@@ -12,29 +12,13 @@ use std::time::{Duration, Instant};
 use orthoslip::Result;
 use orthoslip::coupled::{CoupledSolution, solve_panels_to, solve_to};
 use orthoslip::problem::{Profile, traction_distance};
+use support::clock::{median, repeated};
 
-/// Median wall time over repeated solves (at least 5 runs and 0.3 s, at most 200).
+/// Median wall time over repeated solves (at least 5 runs, then up to 0.3 s or 200).
 fn time(f: impl Fn() -> Result<CoupledSolution>) -> (Duration, Result<CoupledSolution>) {
-    let mut times = Vec::new();
     let start = Instant::now();
-    let mut last = f();
-    while times.len() < 5 || (start.elapsed() < Duration::from_millis(300) && times.len() < 200) {
-        let t = Instant::now();
-        last = f();
-        times.push(t.elapsed());
-    }
-    times.sort();
-    (times[times.len() / 2], last)
-}
-
-fn median(mut v: Vec<f64>) -> f64 {
-    v.sort_by(f64::total_cmp);
-    let n = v.len();
-    if n % 2 == 1 {
-        v[n / 2]
-    } else {
-        0.5 * (v[n / 2 - 1] + v[n / 2])
-    }
+    let (t, last) = repeated(|| start.elapsed().as_secs_f64(), 0.3, 200, f);
+    (Duration::from_secs_f64(t), last)
 }
 
 fn main() {

@@ -6,51 +6,15 @@
 //! the one after for the before and after of docs/theory_spectral.md (S7).
 //!
 //! `cargo run --release --example table_below_timing`
+mod support;
+
 use orthoslip::coupled::{CoupledSolution, solve_to};
 use orthoslip::problem::{Coupling, Profile};
-
-/// struct timespec of Linux (64-bit).
-#[repr(C)]
-struct Timespec {
-    sec: i64,
-    nsec: i64,
-}
-
-unsafe extern "C" {
-    fn clock_gettime(clock: i32, out: *mut Timespec) -> i32;
-}
-
-/// CPU time of this thread in seconds (CLOCK_THREAD_CPUTIME_ID = 3 on Linux).
-fn cpu_seconds() -> f64 {
-    let mut t = Timespec { sec: 0, nsec: 0 };
-    // SAFETY: clock_gettime writes one timespec to a valid pointer.
-    let rc = unsafe { clock_gettime(3, &mut t) };
-    assert_eq!(rc, 0, "clock_gettime");
-    t.sec as f64 + 1e-9 * t.nsec as f64
-}
+use support::clock::{cpu_seconds, median, repeated};
 
 /// Median CPU time of repeated solves (at least 5, up to 0.3 s or 2000) and the last answer.
 fn time(f: impl Fn() -> CoupledSolution) -> (f64, CoupledSolution) {
-    let mut times = Vec::new();
-    let start = cpu_seconds();
-    let mut last = f();
-    while times.len() < 5 || (cpu_seconds() - start < 0.3 && times.len() < 2000) {
-        let t = cpu_seconds();
-        last = f();
-        times.push(cpu_seconds() - t);
-    }
-    times.sort_by(f64::total_cmp);
-    (times[times.len() / 2], last)
-}
-
-fn median(mut v: Vec<f64>) -> f64 {
-    v.sort_by(f64::total_cmp);
-    let n = v.len();
-    if n % 2 == 1 {
-        v[n / 2]
-    } else {
-        0.5 * (v[n / 2 - 1] + v[n / 2])
-    }
+    repeated(cpu_seconds, 0.3, 2000, f)
 }
 
 fn main() {

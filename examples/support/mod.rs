@@ -1,6 +1,7 @@
 //! Code shared by the examples; each example uses a part of it.
 #![allow(dead_code)]
 
+pub mod clock;
 pub mod parallel;
 pub mod plot;
 
