@@ -22,6 +22,7 @@ pub(crate) mod unload;
 mod tests;
 
 use crate::error::{Error, Result};
+use crate::numerics::roots::chord2;
 use crate::problem::Coupling;
 use frame::{Kind, Sizes, Solved, ZoneSpec, solve};
 
@@ -251,71 +252,38 @@ pub(crate) fn monotonic_level(
             })
         }
         Edge::Zone { w1, sign } => {
-            let (mut lw, mut c2) = (w1.ln(), c2);
             let zone = |lw: f64| Edge::Zone { w1: lw.exp(), sign };
-            let mut s = at(zone(lw), c2)?;
-            let mut step = f64::INFINITY;
-            let mut fresh = false;
-            for _ in 0..MAX_NEWTON {
-                let f = [s.sigma[0], s.sigma[1]];
-                if jac.is_none() {
-                    let sw = at(zone(lw + STEP_LN_W1), c2)?;
-                    let sc = at(zone(lw), c2 + STEP_C2)?;
-                    *jac = Some([
-                        [
-                            (sw.sigma[0] - f[0]) / STEP_LN_W1,
-                            (sc.sigma[0] - f[0]) / STEP_C2,
-                        ],
-                        [
-                            (sw.sigma[1] - f[1]) / STEP_LN_W1,
-                            (sc.sigma[1] - f[1]) / STEP_C2,
-                        ],
-                    ]);
-                    fresh = true;
-                }
-                let j = jac.unwrap_or_default();
-                let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
-                if det == 0.0 || !det.is_finite() {
-                    return Err(Error::NoConvergence(
-                        "exact: singular Jacobian of the border constants".to_string(),
-                    ));
-                }
-                let d_lw = -(j[1][1] * f[0] - j[0][1] * f[1]) / det;
-                let d_c2 = -(-j[1][0] * f[0] + j[0][0] * f[1]) / det;
-                // at most a factor e in w1 and 0.05 in c2 per step: the border constants vary
-                // on the scales of a decade of w1 and of c2 + c (section 10's scans)
-                let damp = 1.0f64.min(1.0 / d_lw.abs()).min(0.05 / d_c2.abs());
-                lw += damp * d_lw;
-                // (the Jacobian's step in c2 stays left of c)
-                c2 = (c2 + damp * d_c2).clamp(-1.0 + 2.0 * lw.exp(), c - 10.0 * STEP_C2);
-                // the edge zone stays within half the span to c2
-                lw = lw.min((0.5 * (1.0 + c2)).ln());
-                if lw.exp() < W1_MIN {
-                    return Err(Error::NoConvergence(format!(
-                        "exact: the trailing edge zone went below {W1_MIN:e}, thinner than \
-                         the bases resolve"
-                    )));
-                }
-                s = at(zone(lw), c2)?;
-                let last = (damp * d_c2).abs().max(lw.exp() * (damp * d_lw).abs());
-                let stalled = last > 0.5 * step;
-                step = last;
-                if step <= 0.1 * tol {
-                    break;
-                }
-                if stalled {
-                    // the chord's Jacobian is stale, or sigma's rounding is reached
-                    if fresh {
-                        break;
+            let ([lw, c2], state, step) = chord2(
+                [w1.ln(), c2],
+                [STEP_LN_W1, STEP_C2],
+                0.1 * tol,
+                MAX_NEWTON,
+                jac,
+                |[lw, c2]| at(zone(lw), c2),
+                |s| [s.sigma[0], s.sigma[1]],
+                |[lw, c2]: [f64; 2], [d_lw, d_c2]: [f64; 2]| {
+                    // at most a factor e in w1 and 0.05 in c2 per step: the border constants
+                    // vary on the scales of a decade of w1 and of c2 + c (section 10's scans)
+                    let damp = 1.0f64.min(1.0 / d_lw.abs()).min(0.05 / d_c2.abs());
+                    let lw = lw + damp * d_lw;
+                    // (the Jacobian's step in c2 stays left of c)
+                    let c2 = (c2 + damp * d_c2).clamp(-1.0 + 2.0 * lw.exp(), c - 10.0 * STEP_C2);
+                    // the edge zone stays within half the span to c2
+                    let lw = lw.min((0.5 * (1.0 + c2)).ln());
+                    if lw.exp() < W1_MIN {
+                        return Err(Error::NoConvergence(format!(
+                            "exact: the trailing edge zone went below {W1_MIN:e}, thinner \
+                             than the bases resolve"
+                        )));
                     }
-                    *jac = None;
-                }
-                fresh = false;
-            }
+                    let last = (damp * d_c2).abs().max(lw.exp() * (damp * d_lw).abs());
+                    Ok(([lw, c2], last))
+                },
+            )?;
             Ok(Level {
                 edge: zone(lw),
                 c2,
-                state: s,
+                state,
                 step,
                 solves,
             })

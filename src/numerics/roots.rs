@@ -66,6 +66,77 @@ pub(crate) fn brent(
     )))
 }
 
+/// A 2 x 2 Jacobian, row i the derivatives of the i-th function.
+pub(crate) type Jacobian2 = [[f64; 2]; 2];
+
+/// The chord method for two functions of two unknowns, f(x) = 0, whose evaluation is a
+/// whole solve `solve(x)` giving a state S with f = `value(&S)`:
+/// - the Jacobian by forward differences with steps `h`, kept in `jac` across calls (a
+///   family of like problems) and taken afresh when a step no longer halves the one before
+///   (stale, or the functions' rounding reached: then the search stops once a fresh
+///   Jacobian's step does not halve either);
+/// - each Newton step dx handed to `advance(x, dx)`, which damps, projects and checks it
+///   and returns the next x with the size of the move that measures convergence;
+/// - stops when that size is at most `tol`, or after `max_steps` steps.
+///
+/// Returns the last x, its state and the last move's size. Errors: those of `solve` and
+/// `advance`, and `NoConvergence` for a singular or non-finite Jacobian.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn chord2<S>(
+    x0: [f64; 2],
+    h: [f64; 2],
+    tol: f64,
+    max_steps: usize,
+    jac: &mut Option<Jacobian2>,
+    mut solve: impl FnMut([f64; 2]) -> crate::error::Result<S>,
+    value: impl Fn(&S) -> [f64; 2],
+    mut advance: impl FnMut([f64; 2], [f64; 2]) -> crate::error::Result<([f64; 2], f64)>,
+) -> crate::error::Result<([f64; 2], S, f64)> {
+    let mut x = x0;
+    let mut s = solve(x)?;
+    let mut step = f64::INFINITY;
+    let mut fresh = false;
+    for _ in 0..max_steps {
+        let f = value(&s);
+        if jac.is_none() {
+            let f0 = value(&solve([x[0] + h[0], x[1]])?);
+            let f1 = value(&solve([x[0], x[1] + h[1]])?);
+            *jac = Some([
+                [(f0[0] - f[0]) / h[0], (f1[0] - f[0]) / h[1]],
+                [(f0[1] - f[1]) / h[0], (f1[1] - f[1]) / h[1]],
+            ]);
+            fresh = true;
+        }
+        let j = jac.unwrap_or_default();
+        let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
+        if det == 0.0 || !det.is_finite() {
+            return Err(crate::error::Error::NoConvergence(
+                "chord method: singular Jacobian".to_string(),
+            ));
+        }
+        let dx = [
+            -(j[1][1] * f[0] - j[0][1] * f[1]) / det,
+            -(-j[1][0] * f[0] + j[0][0] * f[1]) / det,
+        ];
+        let (next, last) = advance(x, dx)?;
+        x = next;
+        s = solve(x)?;
+        let stalled = last > 0.5 * step;
+        step = last;
+        if step <= tol {
+            break;
+        }
+        if stalled {
+            if fresh {
+                break;
+            }
+            *jac = None;
+        }
+        fresh = false;
+    }
+    Ok((x, s, step))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -32,6 +32,7 @@ use super::{
     distance, edge_exponent,
 };
 use crate::error::{Error, Result};
+use crate::numerics::roots::chord2;
 use crate::problem::Coupling;
 
 /// A point where the loaded state's forcing r* = H[q*] + bq p* is singular, as 1 + x, and
@@ -250,69 +251,36 @@ pub(crate) fn unload_level(
             solves,
         });
     };
-    let (mut la, mut lw) = (wa.ln(), w2.ln());
-    let mut s = at(la.exp(), Some(lw.exp()))?;
-    let mut step = f64::INFINITY;
-    let mut fresh = false;
-    for _ in 0..MAX_NEWTON {
-        let f = [s.sigma[0], s.sigma[1]];
-        if jac.is_none() {
-            let sa = at((la + STEP_LN_W1).exp(), Some(lw.exp()))?;
-            let sw = at(la.exp(), Some((lw + STEP_LN_W1).exp()))?;
-            *jac = Some([
-                [
-                    (sa.sigma[0] - f[0]) / STEP_LN_W1,
-                    (sw.sigma[0] - f[0]) / STEP_LN_W1,
-                ],
-                [
-                    (sa.sigma[1] - f[1]) / STEP_LN_W1,
-                    (sw.sigma[1] - f[1]) / STEP_LN_W1,
-                ],
-            ]);
-            fresh = true;
-        }
-        let j = jac.unwrap_or_default();
-        let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
-        if det == 0.0 || !det.is_finite() {
-            return Err(Error::NoConvergence(
-                "exact unloading: singular Jacobian of the border constants".to_string(),
-            ));
-        }
-        let d_la = -(j[1][1] * f[0] - j[0][1] * f[1]) / det;
-        let d_lw = -(-j[1][0] * f[0] + j[0][0] * f[1]) / det;
-        // at most a factor e in either width per step (the scales of section 10's scans)
-        let damp = 1.0f64.min(1.0 / d_la.abs()).min(1.0 / d_lw.abs());
-        la += damp * d_la;
-        lw += damp * d_lw;
-        // the stick set keeps at least half the contact's span left by the two zones
-        la = la.min((1.0 - 0.5 * lw.exp()).ln());
-        if lw.exp() < W1_MIN || la.exp() < W1_MIN {
-            return Err(Error::NoConvergence(format!(
-                "exact unloading: an edge zone went below {W1_MIN:e}, thinner than the bases \
-                 resolve"
-            )));
-        }
-        s = at(la.exp(), Some(lw.exp()))?;
-        let last = (la.exp() * damp * d_la)
-            .abs()
-            .max((lw.exp() * damp * d_lw).abs());
-        let stalled = last > 0.5 * step;
-        step = last;
-        if step <= 0.1 * tol {
-            break;
-        }
-        if stalled {
-            if fresh {
-                break;
+    let ([la, lw], state, step) = chord2(
+        [wa.ln(), w2.ln()],
+        [STEP_LN_W1, STEP_LN_W1],
+        0.1 * tol,
+        MAX_NEWTON,
+        jac,
+        |[la, lw]| at(la.exp(), Some(lw.exp())),
+        |s| [s.sigma[0], s.sigma[1]],
+        |[la, lw]: [f64; 2], [d_la, d_lw]: [f64; 2]| {
+            // at most a factor e in either width per step (the scales of section 10's scans)
+            let damp = 1.0f64.min(1.0 / d_la.abs()).min(1.0 / d_lw.abs());
+            let lw = lw + damp * d_lw;
+            // the stick set keeps at least half the contact's span left by the two zones
+            let la = (la + damp * d_la).min((1.0 - 0.5 * lw.exp()).ln());
+            if lw.exp() < W1_MIN || la.exp() < W1_MIN {
+                return Err(Error::NoConvergence(format!(
+                    "exact unloading: an edge zone went below {W1_MIN:e}, thinner than the \
+                     bases resolve"
+                )));
             }
-            *jac = None;
-        }
-        fresh = false;
-    }
+            let last = (la.exp() * damp * d_la)
+                .abs()
+                .max((lw.exp() * damp * d_lw).abs());
+            Ok(([la, lw], last))
+        },
+    )?;
     Ok(Level {
         wa: la.exp(),
         w2: Some(lw.exp()),
-        state: s,
+        state,
         step,
         solves,
     })
