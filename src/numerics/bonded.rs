@@ -31,6 +31,9 @@ const SERIES_TOL: f64 = 1e-18;
 const Z_SERIES: f64 = 0.5;
 const Z_INVERSE: f64 = 1.5;
 
+/// Most powers x^k of one [`Bonded`] (callers size their buffers by it).
+pub(crate) const MAX_DEGREE: usize = 8;
+
 /// Most terms of any series (ratio 2/3: 2/3^110 < 1e-19).
 const MAX_TERMS: usize = 110;
 
@@ -46,8 +49,11 @@ pub(crate) struct Bonded {
     degree: usize,
     /// M_j = int_{-1}^{1} X t^j dt, j < degree.
     moments: Vec<C64>,
-    /// g_(k, m): X x^k = (1 - x)^a sum_m g_(k,m) (1 - x)^m on [c, 1].
+    /// g_(k, m): X x^k = (1 - x)^a sum_m g_(k,m) (1 - x)^m on [c, 1], every row `powers`
+    /// long (zeros past its own terms).
     taylor: Vec<Vec<C64>>,
+    /// Length of the Taylor rows.
+    powers: usize,
     /// -(psi(a + m + 1) + gamma) (the expansion about Z = 1 of each power).
     psi: Vec<C64>,
     /// 1 / (a + i) for i from -MAX_TERMS on (the series' coefficients).
@@ -71,6 +77,7 @@ impl Bonded {
     /// X for the reduced coupling b (0 < b < 1), the stick zone [-c, c] (1 - c = w) and the
     /// powers x^k, k < degree.
     pub(crate) fn new(b: f64, c: f64, w: f64, degree: usize) -> Self {
+        assert!(degree <= MAX_DEGREE, "at most {MAX_DEGREE} powers");
         let eps = b.atanh() / PI;
         let a_bar = C64::new(-0.5, eps);
         // moments: (j + 1) M_(j+1) = 2 i eps M_j + j M_(j-1), M_0 = pi / cosh(pi eps)
@@ -98,7 +105,7 @@ impl Bonded {
         let taylor: Vec<Vec<C64>> = (0..degree)
             .map(|k| {
                 // times x^k = (1 - h)^k
-                let mut row = vec![C64::new(0.0, 0.0); terms + k];
+                let mut row = vec![C64::new(0.0, 0.0); terms + degree];
                 let mut binom = 1.0;
                 for i in 0..=k {
                     let coef = if i % 2 == 0 { binom } else { -binom };
@@ -121,6 +128,7 @@ impl Bonded {
             .map(|m| ((a + m as f64) * w.ln()).exp())
             .collect();
         Bonded {
+            powers: terms + degree,
             eps,
             b: (PI * eps).tanh(),
             c,
@@ -237,13 +245,10 @@ impl Bonded {
             },
             inside: cmy < 0.0,
         };
-        let terms = self.taylor.iter().map(Vec::len).max().unwrap_or(0);
-        for m in 0..terms {
+        for m in 0..self.powers {
             let h = self.power_transform(m, &at);
             for (o, row) in out.iter_mut().zip(&self.taylor) {
-                if let Some(g) = row.get(m) {
-                    *o += g * h;
-                }
+                *o += row[m] * h;
             }
         }
     }

@@ -16,7 +16,7 @@ use crate::error::{Error, Result};
 use crate::numerics::jacobi_transform::{JacobiFamily, Point};
 use crate::numerics::lstsq::{ConstrainedFailure, constrained};
 
-use crate::numerics::bonded::Bonded;
+use crate::numerics::bonded::{Bonded, MAX_DEGREE};
 use faer::complex::Complex;
 
 use super::basis::{Block, parity};
@@ -219,10 +219,10 @@ impl Basis {
 
     /// The bonded columns' (p, q) parts from the complex X x^k (or their transforms):
     /// X x^(2k) gives (Re, Im), i X x^(2k+1) gives (-Im, Re).
-    fn bonded_split(&self, f: &[C64], pv: &mut [f64], qv: &mut [f64]) {
-        let at = self.bonded_start();
+    /// `pv` and `qv` are the bonded block of the columns (from [`Basis::bonded_start`]).
+    fn bonded_split(f: &[C64], pv: &mut [f64], qv: &mut [f64]) {
         for (j, v) in f.iter().enumerate() {
-            let col = at + j / 2 + (j % 2) * (f.len() / 2);
+            let col = j / 2 + (j % 2) * (f.len() / 2);
             if j % 2 == 0 {
                 pv[col] = v.re;
                 qv[col] = v.im;
@@ -269,9 +269,11 @@ impl Basis {
             let n2 = self.stick[2].len();
             self.stick[2].values(t, buf, &mut qv[q0 + n1..q0 + n1 + n2]);
             if let Some(bx) = &self.bonded {
-                let mut f = vec![C64::new(0.0, 0.0); bx.degree()];
-                bx.values(p.x, p.omx, &mut f);
-                self.bonded_split(&f, pv, qv);
+                let mut f = [C64::new(0.0, 0.0); MAX_DEGREE];
+                let f = &mut f[..bx.degree()];
+                bx.values(p.x, p.omx, f);
+                let at = self.bonded_start();
+                Self::bonded_split(f, &mut pv[at..], &mut qv[at..]);
             }
         } else {
             let (s, _) = self.s_pair(p);
@@ -326,10 +328,13 @@ impl Basis {
             hq[j] = mu * (-own - mirror);
         }
         if let Some(bx) = &self.bonded {
-            let mut f = vec![C64::new(0.0, 0.0); bx.degree()];
-            let mut fb = vec![C64::new(0.0, 0.0); bx.scratch_len()];
-            bx.transforms(p.x, p.omx, p.xmc, &mut f, &mut fb);
-            self.bonded_split(&f, hp, hq);
+            // on the stack: this runs at every collocation point
+            let mut f = [C64::new(0.0, 0.0); MAX_DEGREE];
+            let mut fb = [C64::new(0.0, 0.0); 2 * MAX_DEGREE];
+            let f = &mut f[..bx.degree()];
+            bx.transforms(p.x, p.omx, p.xmc, f, &mut fb[..bx.scratch_len()]);
+            let at = self.bonded_start();
+            Self::bonded_split(f, &mut hp[at..], &mut hq[at..]);
         }
     }
 
@@ -357,8 +362,9 @@ impl Basis {
             *v *= self.w;
         }
         if let Some(bx) = &self.bonded {
-            let mut q = vec![0.0; out.len()];
-            self.bonded_split(&bx.integrals(), &mut out, &mut q);
+            let at = self.bonded_start();
+            let mut q = vec![0.0; out.len() - at];
+            Self::bonded_split(&bx.integrals(), &mut out[at..], &mut q);
         }
         out
     }
@@ -602,23 +608,24 @@ impl Fixed {
         };
         let (q0, _) = b.starts();
         let n1 = b.stick[1].len();
-        let p = dot(&b.stick[0], None, 0);
-        let q_plain = dot(&b.stick[1], None, q0);
+        let mut p = dot(&b.stick[0], None, 0);
+        let mut q_plain = dot(&b.stick[1], None, q0);
         // (1 - tau^2)^g = (c - x)^g (1 + tau)^g / c^g
         let (_, opt) = b.stick[2].weight_factors(t);
         let q_edge = dot(&b.stick[2], Some(opt / c.powf(g)), q0 + n1);
-        let (mut p, mut q_plain) = (p, q_plain);
         if let Some(bx) = &b.bonded {
-            let n = b.len();
-            let (mut pv, mut qv) = (vec![0.0; n], vec![0.0; n]);
-            let mut f = vec![C64::new(0.0, 0.0); bx.degree()];
-            bx.values(x, 1.0 - x, &mut f);
-            b.bonded_split(&f, &mut pv, &mut qv);
-            let at = b.bonded_start();
-            for j in at..n {
-                p += pv[j] * self.coef[j];
-                q_plain += qv[j] * self.coef[j];
-            }
+            // the bonded columns are smooth at x = c from the stick side
+            let n = bx.degree();
+            let (mut f, mut pv, mut qv) = (
+                [C64::new(0.0, 0.0); MAX_DEGREE],
+                [0.0; MAX_DEGREE],
+                [0.0; MAX_DEGREE],
+            );
+            bx.values(x, 1.0 - x, &mut f[..n]);
+            Basis::bonded_split(&f[..n], &mut pv[..n], &mut qv[..n]);
+            let coef = &self.coef[b.bonded_start()..];
+            p += pv[..n].iter().zip(coef).map(|(a, c)| a * c).sum::<f64>();
+            q_plain += qv[..n].iter().zip(coef).map(|(a, c)| a * c).sum::<f64>();
         }
         (p, q_plain, q_edge)
     }
