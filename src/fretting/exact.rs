@@ -200,6 +200,26 @@ pub(crate) const STEP_C2: f64 = 1e-5;
 /// factors of 2 and signs for w1 <= 1e-8 (docs/theory_tangential.md section 11).
 pub(crate) const W1_MIN: f64 = 1e-7;
 
+/// The first decade (hi/10, hi), from `hi` down to [`W1_MIN`], over which the border value
+/// `f` at an edge zone's width changes sign, as its geometric middle (a width whose solve
+/// fails gives no sign and is passed over), and the solves taken.
+pub(crate) fn edge_zone_scan(mut hi: f64, f: impl Fn(f64) -> Result<f64>) -> (Option<f64>, usize) {
+    let mut f_hi = f(hi).ok();
+    let mut solves = 1;
+    while hi > W1_MIN {
+        let lo = 0.1 * hi;
+        let f_lo = f(lo).ok();
+        solves += 1;
+        if let (Some(a), Some(b)) = (f_lo, f_hi)
+            && a.signum() != b.signum()
+        {
+            return (Some((lo * hi).sqrt()), solves);
+        }
+        (hi, f_hi) = (lo, f_lo);
+    }
+    (None, solves)
+}
+
 /// Solves (M1)-(M4) at one level: the border constants' root in (ln w1, c2) by Newton's
 /// method with a Jacobian by differences (`jac`, computed if None), from (edge, c2).
 #[allow(clippy::too_many_arguments)]
@@ -497,23 +517,8 @@ pub(crate) fn monotonic(k: &Coupling, qp: f64, tol: f64, traction_tol: f64) -> R
             )?;
             Ok(s.sigma[0] - s.sigma[1])
         };
-        let mut hi = 0.3f64.min(0.5 * (1.0 + c2_start));
-        // (a width whose solve fails gives no sign and is passed over)
-        let mut f_hi = at(hi).ok();
-        solves += 1;
-        let mut found = None;
-        while hi > W1_MIN {
-            let lo = 0.1 * hi;
-            let f_lo = at(lo).ok();
-            solves += 1;
-            if let (Some(a), Some(b)) = (f_lo, f_hi)
-                && a.signum() != b.signum()
-            {
-                found = Some((lo * hi).sqrt());
-                break;
-            }
-            (hi, f_hi) = (lo, f_lo);
-        }
+        let (found, scanned) = edge_zone_scan(0.3f64.min(0.5 * (1.0 + c2_start)), at);
+        solves += scanned;
         let w1 = found.ok_or_else(|| {
             Error::NoConvergence(format!(
                 "exact: no trailing edge zone of width >= {W1_MIN:e} found (the bases resolve \

@@ -29,7 +29,7 @@ mod tests;
 use super::frame::{Kind, Sizes, Solved, ZoneSpec, solve};
 use super::{
     MAX_LEVEL, MAX_NEWTON, Monotonic, SAFETY, START_PANELS, STEP_LN_W1, W1_MIN, contact_rule,
-    distance, edge_exponent,
+    distance, edge_exponent, edge_zone_scan,
 };
 use crate::error::{Error, Result};
 use crate::numerics::roots::chord2;
@@ -345,22 +345,8 @@ pub(crate) fn unload<'a>(
             let s = unload_fixed(m, wa0, Some(w2), qp, 1)?;
             Ok(s.sigma[0] + s.sigma[1])
         };
-        let mut hi = 0.3f64.min(0.5 * (2.0 - wa0));
-        let mut f_hi = at(hi).ok();
-        solves += 1;
-        let mut found = None;
-        while hi > W1_MIN {
-            let lo = 0.1 * hi;
-            let f_lo = at(lo).ok();
-            solves += 1;
-            if let (Some(a), Some(b)) = (f_lo, f_hi)
-                && a.signum() != b.signum()
-            {
-                found = Some((lo * hi).sqrt());
-                break;
-            }
-            (hi, f_hi) = (lo, f_lo);
-        }
+        let (found, scanned) = edge_zone_scan(0.3f64.min(0.5 * (2.0 - wa0)), at);
+        solves += scanned;
         Some(found.ok_or_else(|| {
             Error::NoConvergence(format!(
                 "exact unloading: no trailing edge zone of width >= {W1_MIN:e} found"
