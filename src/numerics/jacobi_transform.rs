@@ -70,7 +70,7 @@ impl Point {
     }
 
     /// ln rho = arcosh |y| for |y| > 1 (0 inside), from the offset |y| - 1.
-    fn ln_rho(self) -> f64 {
+    pub(crate) fn ln_rho(self) -> f64 {
         let d = if self.omy < 0.0 {
             -self.omy
         } else if self.opy < 0.0 {
@@ -84,7 +84,7 @@ impl Point {
 
 /// Relative accuracy lost at most by the forward recurrence outside the interval: it is run
 /// forward while k ln rho <= FORWARD_SPAN (error growth e^(2 k ln rho) <= e^3 = 20).
-const FORWARD_SPAN: f64 = 1.5;
+pub(crate) const FORWARD_SPAN: f64 = 1.5;
 
 /// Miller's backward recurrence starts this far (in units of 1 / ln rho) above the top
 /// degree: the ratio's error falls like rho^(-2 m), e^-40 = 4e-18 at m ln rho = 20.
