@@ -652,7 +652,7 @@ fn admissible(f: &Fixed, mu: f64) -> Option<f64> {
             f.eval_with_noise(&points::Pt {
                 x,
                 omx: 1.0 - x,
-                xmc: if xmc == 0.0 { -f64::MIN_POSITIVE } else { xmc },
+                xmc: if xmc == 0.0 { -0.0 } else { xmc },
             })
         };
         let (stick, slip) = (at(xs), at(xl));

@@ -260,7 +260,7 @@ impl Basis {
         qv.fill(0.0);
         let buf = &mut buf[..self.scratch];
         let (q0, s0) = self.starts();
-        if p.xmc < 0.0 {
+        if p.on_stick() {
             let t = self.tau(p);
             let n0 = self.stick[0].len();
             self.stick[0].values(t, buf, &mut pv[..n0]);
@@ -450,7 +450,7 @@ pub(crate) fn solve_fixed(k: Constants, c: f64, w: f64, sizes: Sizes) -> Result<
     // x = c (C2)
     let (mut ps, mut qs, mut pc, mut qc) = (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]);
     let at_c = |xmc| Pt { x: c, omx: w, xmc };
-    basis.tractions_row(&at_c(-f64::MIN_POSITIVE), &mut ps, &mut qs, &mut scratch);
+    basis.tractions_row(&at_c(-0.0), &mut ps, &mut qs, &mut scratch);
     basis.tractions_row(&at_c(0.0), &mut pc, &mut qc, &mut scratch);
     let integral = basis.integrals();
     let cons: Vec<(Vec<f64>, f64)> = [
@@ -538,7 +538,7 @@ impl Fixed {
         }
         let mu = self.basis.k.mu;
         // q = mu p on the slip zone exactly, not to the rounding of a second sum
-        let (q, q_size) = if p.xmc < 0.0 {
+        let (q, q_size) = if p.on_stick() {
             qv.iter()
                 .zip(&self.coef)
                 .fold((0.0, 0.0), |(q, s), (v, a)| (q + v * a, s + (v * a).abs()))
@@ -552,7 +552,7 @@ impl Fixed {
     /// (p, q) at 0 <= x < 1 (the stick side at x = c).
     pub(crate) fn at(&self, x: f64) -> (f64, f64) {
         let xmc = x - self.basis.c;
-        let xmc = if xmc == 0.0 { -f64::MIN_POSITIVE } else { xmc };
+        let xmc = if xmc == 0.0 { -0.0 } else { xmc };
         self.eval(&Pt {
             x,
             omx: 1.0 - x,
