@@ -95,10 +95,11 @@ const MILLER_SPAN: f64 = 20.0;
 /// serves).
 const RESCALE: f64 = f64::from_bits((1023 + 500) << 52);
 
-/// The deepest start of the backward recurrence for n functions: it runs backward only where
-/// n ln rho > [`FORWARD_SPAN`], so from at most n + MILLER_SPAN n / FORWARD_SPAN.
-fn deepest(n: usize) -> usize {
-    n + (MILLER_SPAN / FORWARD_SPAN * n as f64).ceil() as usize
+/// The deepest start of a backward recurrence (or boundary-value form) that starts `span` /
+/// ln rho above the top degree, for n functions: it is used only where
+/// n ln rho > [`FORWARD_SPAN`], so it starts at most n + span n / FORWARD_SPAN.
+pub(crate) fn deepest(n: usize, span: f64) -> usize {
+    n + (span / FORWARD_SPAN * n as f64).ceil() as usize
 }
 
 /// The family w p_k, k < n, for exponents (a, b).
@@ -157,7 +158,7 @@ impl JacobiFamily {
             b,
             n,
             mass: jacobi_mass(a, b),
-            rec: JacobiRecurrence::new(deepest(n) + 2, a, b),
+            rec: JacobiRecurrence::new(deepest(n, MILLER_SPAN) + 2, a, b),
             ends: [Ends::new(a, b), Ends::new(b, a)],
         }
     }
@@ -257,7 +258,7 @@ impl JacobiFamily {
             //   f_(k-1) = ((y - diag_k) f_k - off_k f_(k+1)) / off_(k-1),
             // rescaled before it can overflow (it grows like rho per step); then
             // T_k = T_0 f_k / f_0
-            let m = (n + (MILLER_SPAN / ln_rho).ceil() as usize).min(deepest(n));
+            let m = (n + (MILLER_SPAN / ln_rho).ceil() as usize).min(deepest(n, MILLER_SPAN));
             let t0 = out[0];
             let (mut next, mut cur) = (0.0, 1.0);
             for k in (1..m).rev() {
