@@ -1067,3 +1067,93 @@ fn spectral_agrees_with_the_panels_below_the_table_edge_on_a_grid() {
         "{unanswered} of {served} unanswered"
     );
 }
+
+/// Small g (docs/theory_spectral.md, section 7): on a grid of b* = 0.25 .. 0.99 and
+/// g = 0.0021 .. 0.03 (mu~ = cot(pi g) / b*), at the tabulated points the bases serve (there
+/// 1 - c >= 1e-3), the spectral answers (c to 1e-10, tractions to 1e-8) against the panels: all
+/// agree within the sum of both estimates, and at most one point is left to the panels.
+/// Prints one line per point: answered or not, the distances over the sums of both
+/// estimates, the level, and both times.
+#[test]
+#[ignore = "slow tier: 72 points, each solved by both solvers (10-20 s)"]
+fn small_g_against_the_panels() {
+    let (mut answered, mut served, mut agree) = (0, 0, 0);
+    let (mut ts, mut tp) = (Vec::new(), Vec::new());
+    let bs = [0.25, 0.35, 0.45, 0.55, 0.65, 0.75, 0.85, 0.95, 0.99];
+    let gs = [0.0021, 0.003, 0.005, 0.007, 0.01, 0.014, 0.02, 0.025, 0.03];
+    for &b in &bs {
+        for &g in &gs {
+            let mu = (PI * g).tan().recip() / b;
+            let Some((lc, _)) = crate::stick_edge_table::lookup(b, mu) else {
+                eprintln!("b* = {b}, g = {g}: not tabulated");
+                continue;
+            };
+            let e = StickEdge::from_logit(lc);
+            if !crate::spectral::serves_at(b, mu, lc) {
+                eprintln!(
+                    "b* = {b}, g = {g}: not served (1 - c = {:.1e})",
+                    e.one_minus_c
+                );
+                continue;
+            }
+            served += 1;
+            let k = Coupling { bp: b, bq: b, mu };
+            let t = std::time::Instant::now();
+            let s = spectral_from_table(&k, 1e-10, 1e-8);
+            let t_s = t.elapsed().as_secs_f64() * 1e3;
+            let t = std::time::Instant::now();
+            let p = solve_panels_to(&k, 1e-10, 1e-8).expect("panels");
+            let t_p = t.elapsed().as_secs_f64() * 1e3;
+            match s {
+                None => eprintln!(
+                    "b* = {b}, g = {g}, mu~ = {mu:.4}, 1 - c = {:.2e}: no answer after {t_s:.1} ms \
+                     (panels {t_p:.1} ms)",
+                    e.one_minus_c
+                ),
+                Some(s) => {
+                    answered += 1;
+                    ts.push(t_s);
+                    tp.push(t_p);
+                    let dc = s.edge().distance(p.edge()) / (s.error + p.error);
+                    let dt = crate::problem::traction_distance(&s, &p)
+                        / (s.traction_error + p.traction_error);
+                    if dc <= 1.0 && dt <= 1.0 {
+                        agree += 1;
+                    }
+                    eprintln!(
+                        "b* = {b}, g = {g}, mu~ = {mu:.4}, 1 - c = {:.2e}: level {}, c {dc:.2}, \
+                         tractions {dt:.2} of the estimates, {t_s:.1} ms (panels {t_p:.1} ms)",
+                        e.one_minus_c, s.order
+                    );
+                }
+            }
+        }
+    }
+    let median = |v: &mut Vec<f64>| {
+        v.sort_by(f64::total_cmp);
+        v.get(v.len() / 2).copied().unwrap_or(f64::NAN)
+    };
+    eprintln!(
+        "{served} served, {answered} answered, {agree} agree; medians {:.1} ms against the \
+         panels' {:.1} ms",
+        median(&mut ts),
+        median(&mut tp)
+    );
+    assert_eq!(agree, answered, "answers off the panels'");
+    assert!(answered + 1 >= served, "{answered} of {served} answered");
+}
+
+/// The spectral solver below the first phase's g = 0.03 (docs/theory_spectral.md section 7):
+/// at g = 0.0021, 0.005 and 0.012 (b* = 0.65, 0.45, 0.85; c = 0.95, 1 - 1.2e-3, 0.60) it
+/// answers, and c and the tractions agree with the panels' within the sum of both estimates.
+#[test]
+fn spectral_agrees_with_the_panels_at_small_g() {
+    for (b, g) in [(0.65, 0.0021), (0.45, 0.005), (0.85, 0.012)] {
+        let mu = (PI * g).tan().recip() / b;
+        let k = Coupling { bp: b, bq: b, mu };
+        let s = solve_to(&k, 1e-10, 1e-8).expect("spectral");
+        assert_eq!(s.regime(), "spectral", "({b}, {mu})");
+        let p = solve_panels_to(&k, 1e-10, 1e-8).expect("panels");
+        assert_agree(&s, &p, b, mu);
+    }
+}

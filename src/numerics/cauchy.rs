@@ -197,26 +197,34 @@ pub(crate) fn log_cauchy(g: f64, z: f64) -> f64 {
     }
     let (a, b, zeta) = (std::f64::consts::LN_2, z.abs().ln(), 0.5 * z);
     let s_g = tail_series(g, zeta);
-    let r_g = if zeta.abs() <= 0.5 {
-        let (mut sum, mut power, mut n) = (0.0f64, zeta, 1.0);
-        while power.abs() > 1e-18 * sum.abs().max(f64::MIN_POSITIVE) {
-            sum += power / (n * (n - g));
-            power *= zeta;
-            n += 1.0;
-        }
-        sum
-    } else {
-        let (mut sum, mut gj, mut j) = (0.0, 1.0, 2);
-        while gj > 1e-18 && j <= 16 {
-            sum += gj * polylog(j, zeta);
-            gj *= g;
-            j += 1;
-        }
-        sum
-    };
+    let r_g = pochhammer_tail(g, zeta);
     a * a * exprel2(g * a) - b * b * exprel2(g * b) + z.abs().powf(g) * gap_over(g, z > 0.0)
         - a * exprel(g * a) * s_g
         - r_g
+}
+
+/// R_e(zeta) = sum_{n >= 1} zeta^n / (n (n - e)) for |e| < 1 and -1/2 <= zeta <= 3/2 (the real
+/// part beyond 1): summed directly for |zeta| <= 1/2, and as sum_j e^j Li_(j+2)(zeta) beyond
+/// (1 / (n (n - e)) = sum_j e^j / n^(j+2)), to |e|^j <= 1e-18 or Li_16. It is
+/// (S_e - S_0) / e of [`tail_series`] without the cancellation, for [`log_cauchy`] and the
+/// difference-quotient families of `numerics::quotient`.
+pub(crate) fn pochhammer_tail(e: f64, zeta: f64) -> f64 {
+    if zeta.abs() <= 0.5 {
+        let (mut sum, mut power, mut n) = (0.0f64, zeta, 1.0);
+        while power.abs() > 1e-18 * sum.abs().max(f64::MIN_POSITIVE) {
+            sum += power / (n * (n - e));
+            power *= zeta;
+            n += 1.0;
+        }
+        return sum;
+    }
+    let (mut sum, mut ej, mut j) = (0.0, 1.0f64, 2);
+    while ej.abs() > 1e-18 && j <= 16 {
+        sum += ej * polylog(j, zeta);
+        ej *= e;
+        j += 1;
+    }
+    sum
 }
 
 /// T(a, zeta) = int_2^inf u^(-a) / (u - 2 zeta) du (principal value for zeta > 1) for a in
@@ -279,7 +287,7 @@ fn tail_series(e: f64, zeta: f64) -> f64 {
 /// gap(x) / x for 0 < |x| < 0.1: gap = 1/x - pi cot(pi x) = 2 sum_k zeta(2k) x^(2k-1) where
 /// `principal` (the principal value, z > 0), gap = 1/x - pi / sin(pi x) = that minus
 /// pi tan(pi x / 2) otherwise; the series to zeta(16) leaves out less than 1e-16 relative.
-fn gap_over(x: f64, principal: bool) -> f64 {
+pub(crate) fn gap_over(x: f64, principal: bool) -> f64 {
     let (mut sum, mut power, mut k) = (0.0, 1.0, 1);
     while let Some(zk) = zeta_int(2 * k) {
         sum += 2.0 * zk * power;

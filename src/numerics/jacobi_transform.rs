@@ -70,7 +70,7 @@ impl Point {
     }
 
     /// ln rho = arcosh |y| for |y| > 1 (0 inside), from the offset |y| - 1.
-    fn ln_rho(self) -> f64 {
+    pub(crate) fn ln_rho(self) -> f64 {
         let d = if self.omy < 0.0 {
             -self.omy
         } else if self.opy < 0.0 {
@@ -84,7 +84,7 @@ impl Point {
 
 /// Relative accuracy lost at most by the forward recurrence outside the interval: it is run
 /// forward while k ln rho <= FORWARD_SPAN (error growth e^(2 k ln rho) <= e^3 = 20).
-const FORWARD_SPAN: f64 = 1.5;
+pub(crate) const FORWARD_SPAN: f64 = 1.5;
 
 /// Miller's backward recurrence starts this far (in units of 1 / ln rho) above the top
 /// degree: the ratio's error falls like rho^(-2 m), e^-40 = 4e-18 at m ln rho = 20.
@@ -95,10 +95,11 @@ const MILLER_SPAN: f64 = 20.0;
 /// serves).
 const RESCALE: f64 = f64::from_bits((1023 + 500) << 52);
 
-/// The deepest start of the backward recurrence for n functions: it runs backward only where
-/// n ln rho > [`FORWARD_SPAN`], so from at most n + MILLER_SPAN n / FORWARD_SPAN.
-fn deepest(n: usize) -> usize {
-    n + (MILLER_SPAN / FORWARD_SPAN * n as f64).ceil() as usize
+/// The deepest start of a backward recurrence (or boundary-value form) that starts `span` /
+/// ln rho above the top degree, for n functions: it is used only where
+/// n ln rho > [`FORWARD_SPAN`], so it starts at most n + span n / FORWARD_SPAN.
+pub(crate) fn deepest(n: usize, span: f64) -> usize {
+    n + (span / FORWARD_SPAN * n as f64).ceil() as usize
 }
 
 /// The family w p_k, k < n, for exponents (a, b).
@@ -157,7 +158,7 @@ impl JacobiFamily {
             b,
             n,
             mass: jacobi_mass(a, b),
-            rec: JacobiRecurrence::new(deepest(n) + 2, a, b),
+            rec: JacobiRecurrence::new(deepest(n, MILLER_SPAN) + 2, a, b),
             ends: [Ends::new(a, b), Ends::new(b, a)],
         }
     }
@@ -257,7 +258,7 @@ impl JacobiFamily {
             //   f_(k-1) = ((y - diag_k) f_k - off_k f_(k+1)) / off_(k-1),
             // rescaled before it can overflow (it grows like rho per step); then
             // T_k = T_0 f_k / f_0
-            let m = (n + (MILLER_SPAN / ln_rho).ceil() as usize).min(deepest(n));
+            let m = (n + (MILLER_SPAN / ln_rho).ceil() as usize).min(deepest(n, MILLER_SPAN));
             let t0 = out[0];
             let (mut next, mut cur) = (0.0, 1.0);
             for k in (1..m).rev() {

@@ -7,5 +7,6 @@ pub(crate) mod jacobi_transform;
 pub(crate) mod lstsq;
 pub(crate) mod orthopoly;
 pub(crate) mod quadrature;
+pub(crate) mod quotient;
 pub(crate) mod roots;
 pub(crate) mod special;

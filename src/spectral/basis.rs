@@ -13,13 +13,102 @@
 //! weights; q = mu p there (B3).
 
 use crate::numerics::jacobi_transform::{JacobiFamily, Point, pole_transform};
+use crate::numerics::quotient::QuotientFamily;
+
+/// A block's weighted polynomials: a Jacobi family, or below [`super::system::QUOTIENT_BELOW`]
+/// the slip zone's difference-quotient family (docs/theory_spectral.md, section 7).
+#[derive(Clone, Debug)]
+pub(crate) enum Family {
+    Jacobi(JacobiFamily),
+    Quotient(QuotientFamily),
+}
+
+impl Family {
+    fn len(&self) -> usize {
+        match self {
+            Family::Jacobi(f) => f.len(),
+            Family::Quotient(f) => f.len(),
+        }
+    }
+
+    fn weight(&self, y: Point) -> f64 {
+        match self {
+            Family::Jacobi(f) => f.weight(y),
+            Family::Quotient(f) => f.weight(y),
+        }
+    }
+
+    fn values_weighted(&self, y: Point, w: f64, out: &mut [f64]) {
+        match self {
+            Family::Jacobi(f) => f.values_weighted(y, w, out),
+            Family::Quotient(f) => f.values_weighted(y, w, out),
+        }
+    }
+
+    fn t0(&self, y: Point) -> f64 {
+        match self {
+            Family::Jacobi(f) => f.t0(y),
+            Family::Quotient(f) => f.t0(y),
+        }
+    }
+
+    fn transforms(&self, y: Point, out: &mut [f64]) {
+        match self {
+            Family::Jacobi(f) => f.transforms(y, out),
+            Family::Quotient(f) => f.transforms(y, out),
+        }
+    }
+
+    fn same_as(&self, other: &Family) -> bool {
+        match (self, other) {
+            (Family::Jacobi(a), Family::Jacobi(b)) => a.same_as(b),
+            (Family::Quotient(a), Family::Quotient(b)) => a.same_as(b),
+            _ => false,
+        }
+    }
+
+    /// int w p_k.
+    fn moment(&self, k: usize) -> f64 {
+        match self {
+            Family::Jacobi(f) => {
+                if k == 0 {
+                    f.mass()
+                } else {
+                    0.0
+                }
+            }
+            Family::Quotient(f) => f.moment(k),
+        }
+    }
+
+    /// The weight's two factors: (1 - y)^a and (1 + y)^b of a Jacobi family, (1 - y)^-g and
+    /// ((1 + y)^g - 1) / g of the quotient family.
+    fn weight_factors(&self, y: Point) -> (f64, f64) {
+        match self {
+            Family::Jacobi(f) => f.weight_factors(y),
+            Family::Quotient(f) => f.factors(y),
+        }
+    }
+}
+
+impl From<JacobiFamily> for Family {
+    fn from(f: JacobiFamily) -> Self {
+        Family::Jacobi(f)
+    }
+}
+
+impl From<QuotientFamily> for Family {
+    fn from(f: QuotientFamily) -> Self {
+        Family::Quotient(f)
+    }
+}
 
 /// One weight's polynomials and poles: columns `k` of the family taken (all, or one parity),
 /// then the poles, each a pair at +Z and -Z with the pair's sign (+1 even, -1 odd) or a single
 /// pole (sign 0).
 #[derive(Clone, Debug)]
 pub(crate) struct Block {
-    family: JacobiFamily,
+    family: Family,
     /// The degrees used (all k < n, or the even or odd ones).
     degrees: Vec<usize>,
     /// The poles Z (outside [-1, 1]) and T_0 there; for pairs also T_0(-Z).
@@ -31,7 +120,13 @@ pub(crate) struct Block {
 impl Block {
     /// A block of `family`'s `degrees` and the poles `z` (pairs with sign `pair`, or single
     /// poles for pair = 0).
-    pub(crate) fn new(family: JacobiFamily, degrees: Vec<usize>, z: &[Point], pair: f64) -> Self {
+    pub(crate) fn new(
+        family: impl Into<Family>,
+        degrees: Vec<usize>,
+        z: &[Point],
+        pair: f64,
+    ) -> Self {
+        let family = family.into();
         let poles = z
             .iter()
             .map(|&z| {
@@ -115,6 +210,11 @@ impl Block {
         }
     }
 
+    /// Whether this block is the quotient family.
+    pub(crate) fn is_quotient(&self) -> bool {
+        matches!(self.family, Family::Quotient(_))
+    }
+
     /// Whether `other` has this block's family (the same exponents and length), so that
     /// the family's transforms serve both.
     pub(crate) fn same_family(&self, other: &Block) -> bool {
@@ -124,7 +224,7 @@ impl Block {
     /// The columns' integrals over [-1, 1].
     pub(crate) fn integrals(&self, out: &mut [f64]) {
         for (o, &k) in out.iter_mut().zip(&self.degrees) {
-            *o = if k == 0 { self.family.mass() } else { 0.0 };
+            *o = self.family.moment(k);
         }
         let m = self.degrees.len();
         for (o, &(_, t0z, t0mz)) in out[m..].iter_mut().zip(&self.poles) {
@@ -139,7 +239,7 @@ impl Block {
         }
     }
 
-    /// The family's weight factors (1 - y)^a and (1 + y)^b at y.
+    /// The family's weight factors at y ([`Family::weight_factors`]).
     pub(crate) fn weight_factors(&self, y: Point) -> (f64, f64) {
         self.family.weight_factors(y)
     }

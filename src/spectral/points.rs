@@ -11,6 +11,16 @@ pub(crate) struct Pt {
     pub(crate) xmc: f64,
 }
 
+impl Pt {
+    /// Whether the point lies on the stick zone: x < c, or x = c from the stick side (xmc = -0.0,
+    /// where the edge factors (c - x)^g vanish as they do in the limit; at
+    /// xmc = -f64::MIN_POSITIVE they were (2e-308)^g, 1e-9 at g = 0.03 and 1e-3 at g = 0.01,
+    /// docs/theory_spectral.md section 7).
+    pub(crate) fn on_stick(&self) -> bool {
+        self.xmc < 0.0 || (self.xmc == 0.0 && self.xmc.is_sign_negative())
+    }
+}
+
 /// Geometric points per decade towards the ends.
 const PER_DECADE: f64 = 3.0;
 
