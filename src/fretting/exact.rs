@@ -568,11 +568,6 @@ pub(crate) fn monotonic(k: &Coupling, qp: f64, tol: f64, traction_tol: f64) -> R
 }
 
 impl Monotonic {
-    /// Q/P.
-    pub(crate) fn qp(&self) -> f64 {
-        self.qp
-    }
-
     /// 1 + c1 and c2.
     pub(crate) fn stick_set(&self) -> (f64, f64) {
         (self.level.w1(), self.level.c2)
