@@ -16,6 +16,7 @@
 //! (g = 1/2 and the bonded exponent -1/2 coincide) and one border constant fixes c2.
 
 pub(crate) mod frame;
+pub(crate) mod reload;
 pub(crate) mod unload;
 
 #[cfg(test)]
