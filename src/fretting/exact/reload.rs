@@ -40,7 +40,23 @@ pub(crate) fn reload<'a, 'b>(
             "exact reloading: needs Q**/P < Q/P < mu (Q/P = {qp}, Q**/P = {q_low}, mu = {mu})"
         )));
     }
-    unload(data, -qp, tol, traction_tol).map(|mirrored| Reloading { mirrored })
+    unload(data, -qp, tol, traction_tol)
+        .map(|mirrored| Reloading { mirrored })
+        .map_err(|e| {
+            // the unloading's messages speak of the mirrored frame: say so
+            let frame = |m: String| {
+                format!(
+                    "exact reloading to Q/P = {qp}, solved as the mirrored unloading \
+                     (x -> -x, q -> -q, docs/theory_tangential.md section 15): {m}"
+                )
+            };
+            match e {
+                Error::InvalidArgument(m) => Error::InvalidArgument(frame(m)),
+                Error::NoConvergence(m) => Error::NoConvergence(frame(m)),
+                Error::NoAdmissibleSolution(m) => Error::NoAdmissibleSolution(frame(m)),
+                other => other,
+            }
+        })
 }
 
 impl Reloading<'_, '_> {

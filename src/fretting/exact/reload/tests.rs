@@ -5,13 +5,13 @@
 //! dissipation (docs/theory_tangential.md section 15); and the ply's corner at +1, where the
 //! three-zone pattern does not hold and the answer is refused.
 
-use super::super::frame::Loc;
 use super::super::unload::{Mirror, Start, Unloading, first_slip, unload, unload_level};
-use super::super::{contact_rule, distance, edge_exponent, monotonic};
+use super::super::{distance, edge_exponent, monotonic, quadrature_forces};
 use super::*;
 use crate::Material;
 use crate::lcp::history::{History, State};
 use crate::numerics::quadrature::gauss_jacobi;
+use crate::numerics::roots::brent;
 use crate::problem::Coupling;
 
 fn ply() -> Coupling {
@@ -162,21 +162,11 @@ fn t15<D: Start + ?Sized>(u: &Unloading<D>, b2: f64) -> f64 {
         .sum()
 }
 
-/// The root b2 of (T15) at Q/P = qp by the secant method, from 0.01 either side of `near`.
+/// The root b2 of (T15) at Q/P = qp by Brent's method in the bracket `near` +- 0.01.
 fn t15_root<D: Start + ?Sized>(u: &Unloading<D>, qp: f64, near: f64) -> f64 {
-    let rise = qp - u.qp;
-    let (mut a, mut b) = (near - 0.01, near + 0.01);
-    let (mut fa, mut fb) = (t15(u, a) - rise, t15(u, b) - rise);
-    for _ in 0..40 {
-        if fb == fa || (b - a).abs() < 1e-14 {
-            break;
-        }
-        let next = b - fb * (b - a) / (fb - fa);
-        (a, fa) = (b, fb);
-        b = next;
-        fb = t15(u, b) - rise;
-    }
-    b
+    let f = |b2: f64| t15(u, b2) - (qp - u.qp);
+    let (a, b) = (near - 0.01, near + 0.01);
+    brent(|x| Ok(f(x)), (a, f(a)), (b, f(b)), 1e-14, 100).unwrap()
 }
 
 /// int p, int q by a quadrature of the returned tractions (in the contact's frame); the
@@ -189,38 +179,10 @@ fn check_state(r: &Reloading) -> (f64, f64, f64) {
     let k = *u.coupling();
     let g = edge_exponent(&k);
     let s = &u.level.state;
-    let (mut ip, mut iq) = (0.0, 0.0);
-    for (opx, omx, w) in contact_rule(g, s, s) {
-        // the rule's nodes in the mirrored frame, the tractions read in the contact's
-        let (p, q) = r.tractions(omx, opx);
-        ip += w * p;
-        iq += w * q;
-    }
-    let f = &s.frame;
-    let mut worst = 0.0f64;
-    for zone in 0..f.zone_count() {
-        let len = f.zone_len(zone);
-        for i in 0..37 {
-            let th = (i as f64 + 1.0) * std::f64::consts::PI / 38.0;
-            let (a, b) = ((0.5 * th).sin().powi(2), (0.5 * th).cos().powi(2));
-            let l = Loc {
-                zone,
-                from_lo: len * a,
-                to_hi: len * b,
-            };
-            let (opx, omx) = f.offsets(&l);
-            let (p, q) = s.tractions_at(&l);
-            let (hp, hq) = s.hilbert_at(&l);
-            let scale = if k.bp > 0.0 { k.bp * k.mu * p } else { p };
-            worst = worst.max((hp - k.bp * q).abs() / scale);
-            if f.is_stick(zone) {
-                let r2 = hq + k.bq * p - u.loaded.forcing(opx, omx);
-                worst = worst.max(r2.abs() / (k.bq * p));
-                assert!(q.abs() <= k.mu * p * (1.0 + 1e-9), "|q| > mu p at {opx}");
-            }
-            assert!(p > 0.0);
-        }
-    }
+    // in the mirrored frame int q changes sign
+    let (ip, iq) = quadrature_forces(g, s);
+    let iq = -iq;
+    let worst = s.residual_between_points(&|opx, omx| u.loaded.forcing(opx, omx));
     // the mirrored frame's leading zone is the reloading's zone at +1 (q = +mu p, slip < 0 in
     // the contact's frame), its trailing zone the one at -1
     let (leading, trailing) = u.zone_slips();
