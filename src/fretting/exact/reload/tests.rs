@@ -6,7 +6,7 @@
 //! three-zone pattern does not hold and the answer is refused.
 
 use super::super::unload::{Mirror, Start, Unloading, first_slip, unload, unload_level};
-use super::super::{distance, edge_exponent, monotonic, quadrature_forces};
+use super::super::{contact_rule, distance, edge_exponent, monotonic, quadrature_forces};
 use super::*;
 use crate::Material;
 use crate::lcp::history::{History, State};
@@ -193,8 +193,9 @@ fn check_state(r: &Reloading) -> (f64, f64, f64) {
 
 /// bp = 0 (the ply's bq, Q* = 0.6 mu P, unloaded to -Q*): q**/p0 is largest at x = +1, so
 /// the reloading sticks fully up to Q_s = Q** + P (mu - q**/p0(+1)), which lies above Q*
-/// (shakedown, section 15), and is refused below it; above it b2 is the root of (T15) to
-/// 1e-9, with equilibrium, residuals and inequalities.
+/// (shakedown, section 15), and is refused below it; the state at +Q* is not the first
+/// loaded one (int |q - q*| against the grid's); above Q_s b2 is the root of (T15) to 1e-9,
+/// with equilibrium, residuals and inequalities.
 #[test]
 fn goodman_reloading_matches_the_closed_form() {
     let k = Coupling { bp: 0.0, ..ply() };
@@ -215,6 +216,19 @@ fn goodman_reloading_matches_the_closed_form() {
             q / p
         );
     }
+    // the state at +Q* after reloading, q** + (2 Q*/P) p0 ((T15a)), against the first loaded
+    // state: int |q - q*| (the grid: 4.964e-2 at N = 200, 400 and 800)
+    let g = edge_exponent(&k);
+    let apart: f64 = contact_rule(g, &u.level.state, &m.level.state)
+        .into_iter()
+        .map(|(opx, omx, w)| {
+            let p0 = 1.0 / (std::f64::consts::PI * (opx * omx).sqrt());
+            let reloaded = u.tractions(opx, omx).1 + 2.0 * q_star * p0;
+            w * (reloaded - m.tractions(opx, omx).1).abs()
+        })
+        .sum();
+    println!("int |q(+Q*, reloaded) - q*| = {apart:.6e}");
+    assert!((apart - 4.964e-2).abs() < 1e-4, "{apart}");
     let mirror = Mirror { inner: &u };
     let qs = -first_slip(&mirror).unwrap();
     assert!(((qs + q_star) - (k.mu - corner)).abs() < 1e-12);
