@@ -24,7 +24,7 @@
 //! answer whose leading zone slips backwards there.
 
 #[cfg(test)]
-mod tests;
+pub(crate) mod tests;
 
 use super::frame::{Kind, Sizes, Solved, ZoneSpec, solve};
 use super::{

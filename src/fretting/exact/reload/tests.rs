@@ -191,6 +191,26 @@ fn check_state(r: &Reloading) -> (f64, f64, f64) {
     (ip - 1.0, iq - r.qp(), worst)
 }
 
+/// q/p at the corner x = `end` (+1 or -1, read 1e-12 from it), asserting that it is the
+/// largest value of q/p on [-1, 1] at the corner +1, the least at -1 (on 400 points): where
+/// a bp = 0 branch first slips ((T15a), and (T13)'s first-slip load).
+fn corner_ratio(tractions: &dyn Fn(f64, f64) -> (f64, f64), end: f64) -> f64 {
+    let at = |x: f64| {
+        let (p, q) = tractions(1.0 + x, 1.0 - x);
+        q / p
+    };
+    let corner = at(end - end.signum() * 1e-12);
+    for i in 0..400 {
+        let x = -1.0 + 2.0 * (i as f64 + 0.5) / 400.0;
+        assert!(
+            end * (at(x) - corner) < 0.0,
+            "q/p = {} at x = {x} beyond its value {corner} at {end}",
+            at(x)
+        );
+    }
+    corner
+}
+
 /// bp = 0 (the ply's bq, Q* = 0.6 mu P, unloaded to -Q*): q**/p0 is largest at x = +1, so
 /// the reloading sticks fully up to Q_s = Q** + P (mu - q**/p0(+1)), which lies above Q*
 /// (shakedown, section 15), and is refused below it; the state at +Q* is not the first
@@ -203,19 +223,7 @@ fn goodman_reloading_matches_the_closed_form() {
     let m = monotonic(&k, q_star, 1e-11, 1e-9).unwrap();
     let u = unload(&m, -q_star, 1e-11, 1e-9).unwrap();
     let (a1, _) = u.stick_set();
-    let corner = {
-        let (p, q) = u.tractions(2.0 - 1e-12, 1e-12);
-        q / p
-    };
-    for i in 0..400 {
-        let x = -1.0 + 2.0 * (i as f64 + 0.5) / 400.0;
-        let (p, q) = u.tractions(1.0 + x, 1.0 - x);
-        assert!(
-            q / p < corner,
-            "q**/p0 = {} at x = {x} above its corner value {corner}",
-            q / p
-        );
-    }
+    let corner = corner_ratio(&|o, m| u.tractions(o, m), 1.0);
     // the state at +Q* after reloading, q** + (2 Q*/P) p0 ((T15a)), against the first loaded
     // state: int |q - q*| (the grid: 4.964e-2 at N = 200, 400 and 800)
     let g = edge_exponent(&k);
@@ -430,5 +438,60 @@ fn dissipation_of_the_first_cycle() {
                 );
             }
         }
+    }
+}
+
+/// The second unloading, from a reloading state as data (bp = 0; `Start` for `Reloading`):
+/// reloaded past Q_s to Q_r, where a zone (b2, 1) slips, then unloaded. q_r/p0 is least at
+/// -1, so the branch sticks fully down to Q_r - P (mu + q_r/p0(-1)), and below it a1 is the
+/// root of (T13) with q_r in place of q* to 1e-9 (a1 left of the unloaded state's kink a1**,
+/// where (T13)'s integrand is analytic), with equilibrium, residuals and slip signs.
+#[test]
+fn goodman_second_unloading_matches_the_closed_form() {
+    use super::super::unload::tests::t13;
+    let k = Coupling { bp: 0.0, ..ply() };
+    let q_star = 0.18;
+    let m = monotonic(&k, q_star, 1e-11, 1e-9).unwrap();
+    let u = unload(&m, -q_star, 1e-11, 1e-9).unwrap();
+    let (a1_un, _) = u.stick_set();
+    let mirror = Mirror { inner: &u };
+    let qs = -first_slip(&mirror).unwrap();
+    let q_r = qs + 0.3 * (k.mu - qs);
+    let r = reload(&mirror, q_r, 1e-11, 1e-9).unwrap();
+    let corner = corner_ratio(&|o, m| r.tractions(o, m), -1.0);
+    let q_s2 = first_slip(&r).unwrap();
+    assert!((q_s2 - (q_r - (k.mu + corner))).abs() < 1e-12);
+    assert!(matches!(
+        unload(&r, q_s2 + 1e-3, 1e-10, 1e-8),
+        Err(Error::InvalidArgument(_))
+    ));
+    let g = edge_exponent(&k);
+    for frac in [0.05, 0.1] {
+        let qp = q_s2 - frac * (q_s2 + k.mu);
+        let v = unload(&r, qp, 1e-11, 1e-9).unwrap();
+        let (a1, a2) = v.stick_set();
+        assert_eq!(a2, 1.0);
+        assert!(a1 < a1_un - 0.01, "a1 = {a1} near the kink a1** = {a1_un}");
+        let f = |a: f64| t13(&r, a) - (q_r - qp);
+        let (lo, hi) = (a1 - 0.005, a1 + 0.005);
+        let root = brent(|a| Ok(f(a)), (lo, f(lo)), (hi, f(hi)), 1e-14, 100).unwrap();
+        let (ip, iq) = quadrature_forces(g, &v.level.state);
+        let res = v
+            .level
+            .state
+            .residual_between_points(&|opx, omx| r.forcing(opx, omx));
+        let (leading, _) = v.zone_slips();
+        println!(
+            "Q/P = {qp} from Q_r/P = {q_r} (first slip {q_s2}): a1 = {a1:.10} against (T13)'s \
+             {root:.10}; estimates {:.1e}, {:.1e}; int p - 1 = {:.1e}, int q - Q/P = {:.1e}, \
+             residual {res:.1e}",
+            v.c_error,
+            v.traction_error,
+            ip - 1.0,
+            iq - qp
+        );
+        assert!((a1 - root).abs() < 1e-9 && v.c_error < 1e-10);
+        assert!((ip - 1.0).abs() < 1e-9 && (iq - qp).abs() < 1e-9 && res < 1e-9);
+        assert!(leading.iter().all(|(_, s)| *s > 0.0), "{leading:?}");
     }
 }

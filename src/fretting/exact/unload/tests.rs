@@ -39,7 +39,8 @@ fn grid(k: &Coupling, n: usize, q_star: f64, qp: f64) -> History {
 /// (Q* - Q)/P = int_{-1}^{a1} (mu p0 + q*) sqrt((1 - s)/(a1 - s)) ds, by Gauss-Jacobi with
 /// the weight ((a1 - s)(1 + s))^(-1/2) (mu p0 + q* carries (1 + s)^(-1/2) and is analytic
 /// inside the loaded stick set); p0 = 1/(pi sqrt(1 - s^2)), q* from the loading solver.
-fn t13(m: &Monotonic, a1: f64) -> f64 {
+pub(crate) fn t13<D: Start + ?Sized>(m: &D, a1: f64) -> f64 {
+    let mu = m.coupling().mu;
     let (t, w) = gauss_jacobi(40, -0.5, -0.5);
     t.iter()
         .zip(&w)
@@ -48,7 +49,7 @@ fn t13(m: &Monotonic, a1: f64) -> f64 {
             let omx = 2.0 - opx;
             let p0 = 1.0 / (std::f64::consts::PI * (opx * omx).sqrt());
             let (_, q) = m.tractions(opx, omx);
-            w * (m.k.mu * p0 + q) * opx.sqrt() * omx.sqrt()
+            w * (mu * p0 + q) * opx.sqrt() * omx.sqrt()
         })
         .sum()
 }
