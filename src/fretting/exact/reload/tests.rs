@@ -283,8 +283,8 @@ fn ply_corner_is_refused() {
 
 /// The ply's reloading at +Q* level by level from the root near the grid's start (section
 /// 15): the widths, the border constants, the traction distance between levels, the slip
-/// signs of the last level and q/(mu p) near x = +1. Levels 1-5 (40 s; levels 6-8 cost 80 s
-/// more: `ORTHOSLIP_MAX_LEVEL=8`).
+/// signs of the last level and q/(mu p) near x = +1. Levels 1-5 (14 s alone, 40 s on the
+/// shared machine; levels 6-8 cost 80 s more: `ORTHOSLIP_MAX_LEVEL=8`).
 #[test]
 #[ignore]
 fn ply_corner_on_the_ladder() {
