@@ -11,7 +11,15 @@
 //! - (R4) int p = 1, int q = Q/P; bounded tractions at b1 and b2.
 //!
 //! With bp = 0 there is no zone at -1, and the branch sticks fully up to the first-slip load
-//! Q_s = Q** + P (mu - q**/p0 at x = +1) ((T15)); that load is above Q* (shakedown).
+//! Q_s = Q** + P (mu - q**/p0 at x = +1) ((T15a); loads below it are refused with that
+//! formula); above it b2 solves (T15). For the ply's bq at Q* = 0.6 mu P, Q_s = 1.09 Q*: the
+//! cycle shakes down after the first unloading.
+//!
+//! Limits (section 15): for bp > 0 the unloaded state's thin trailing zone at +1 sits on the
+//! friction bound and the reloading pushes it towards the bound, the mirror of the
+//! unloading's corner above -0.48 Q* (section 13). On the ply the three-zone answer does not
+//! converge there (the levels' tractions stay 5e-4 .. 9e-3 apart) and slips backwards at +1:
+//! it is refused (NoConvergence or NoAdmissibleSolution) along the whole branch.
 
 #[cfg(test)]
 mod tests;
