@@ -16,6 +16,7 @@
 //! (g = 1/2 and the bonded exponent -1/2 coincide) and one border constant fixes c2.
 
 pub(crate) mod frame;
+pub(crate) mod reload;
 pub(crate) mod unload;
 
 #[cfg(test)]
@@ -324,6 +325,18 @@ fn breakpoints(s: &Solved) -> Vec<(f64, f64)> {
     out
 }
 
+/// int p and int q of a solved state by the graded rule of [`contact_rule`] on its returned
+/// tractions (not the bases' moments): the equilibrium checks of the tests.
+#[cfg(test)]
+pub(crate) fn quadrature_forces(g: f64, s: &Solved) -> (f64, f64) {
+    contact_rule(g, s, s)
+        .into_iter()
+        .fold((0.0, 0.0), |(ip, iq), (opx, omx, w)| {
+            let (p, q) = s.tractions(opx, omx);
+            (ip + w * p, iq + w * q)
+        })
+}
+
 /// Quadrature nodes (1 + x, 1 - x) and weights over [-1, 1] with breakpoints at both
 /// solutions' zone ends: each half piece graded geometrically towards its end (ratio
 /// [`GRADING`], [`GRADED_LEVELS`] levels), [`RULE_POINTS`]-point Gauss-Legendre per
@@ -568,11 +581,6 @@ pub(crate) fn monotonic(k: &Coupling, qp: f64, tol: f64, traction_tol: f64) -> R
 }
 
 impl Monotonic {
-    /// Q/P.
-    pub(crate) fn qp(&self) -> f64 {
-        self.qp
-    }
-
     /// 1 + c1 and c2.
     pub(crate) fn stick_set(&self) -> (f64, f64) {
         (self.level.w1(), self.level.c2)

@@ -558,4 +558,38 @@ impl Solved {
         let dot = |v: &[f64]| v.iter().zip(&self.coef).map(|(a, b)| a * b).sum::<f64>();
         (dot(&ip), dot(&iq))
     }
+
+    /// The largest residual of H[p] = bp q, relative to bp mu p (to p when bp = 0), and of the
+    /// stick rows H[q] + bq p = forcing(1 + x, 1 - x), relative to bq p, at 37 points per zone
+    /// midway between Chebyshev points (the checks of docs/theory_tangential.md sections 12,
+    /// 14 and 15); asserts p > 0 at every point and |q| <= mu p on the stick zones.
+    #[cfg(test)]
+    pub(crate) fn residual_between_points(&self, forcing: &dyn Fn(f64, f64) -> f64) -> f64 {
+        let (f, k) = (&self.frame, &self.frame.k);
+        let mut worst = 0.0f64;
+        for zone in 0..f.zone_count() {
+            let len = f.zone_len(zone);
+            for i in 0..37 {
+                let th = (i as f64 + 1.0) * std::f64::consts::PI / 38.0;
+                let (a, b) = ((0.5 * th).sin().powi(2), (0.5 * th).cos().powi(2));
+                let l = Loc {
+                    zone,
+                    from_lo: len * a,
+                    to_hi: len * b,
+                };
+                let (opx, omx) = f.offsets(&l);
+                let (p, q) = self.tractions_at(&l);
+                let (hp, hq) = self.hilbert_at(&l);
+                let scale = if k.bp > 0.0 { k.bp * k.mu * p } else { p };
+                worst = worst.max((hp - k.bp * q).abs() / scale);
+                if f.is_stick(zone) {
+                    let r2 = hq + k.bq * p - forcing(opx, omx);
+                    worst = worst.max(r2.abs() / (k.bq * p));
+                    assert!(q.abs() <= k.mu * p * (1.0 + 1e-9), "|q| > mu p at {opx}");
+                }
+                assert!(p > 0.0, "p = {p} at 1 + x = {opx}");
+            }
+        }
+        worst
+    }
 }

@@ -4,7 +4,6 @@
 //! extrapolated in N, equilibrium by a quadrature of the returned tractions, the residuals
 //! of (M1)-(M2) at points between the collocation points, and the inequalities.
 
-use super::frame::Loc;
 use super::*;
 use crate::Material;
 use crate::lcp::history::History;
@@ -193,12 +192,7 @@ fn equilibrium_residuals_and_inequalities() {
         let m = monotonic(&k, qp, 1e-10, 1e-6).unwrap();
         let g = edge_exponent(&k);
         let s = &m.level.state;
-        let (mut ip, mut iq) = (0.0, 0.0);
-        for (opx, omx, w) in contact_rule(g, s, s) {
-            let (p, q) = s.tractions(opx, omx);
-            ip += w * p;
-            iq += w * q;
-        }
+        let (ip, iq) = quadrature_forces(g, s);
         assert!(
             (ip - 1.0).abs() < 1e-9 && (iq - qp).abs() < 1e-9,
             "int p = {ip}, int q = {iq}"
@@ -210,34 +204,13 @@ fn equilibrium_residuals_and_inequalities() {
         );
         assert!(s.residual < 1e-10, "collocation residual {:e}", s.residual);
         // residuals between the Chebyshev points of each zone (m + 1 points, offset by half)
-        let f = &s.frame;
-        let mut worst = 0.0f64;
-        for zone in 0..f.zone_count() {
-            let len = f.zone_len(zone);
-            for i in 0..37 {
-                let th = (i as f64 + 1.0) * std::f64::consts::PI / 38.0;
-                let (a, b) = ((0.5 * th).sin().powi(2), (0.5 * th).cos().powi(2));
-                let l = Loc {
-                    zone,
-                    from_lo: len * a,
-                    to_hi: len * b,
-                };
-                let (opx, omx) = f.offsets(&l);
-                let (p, q) = s.tractions_at(&l);
-                let (hp, hq) = s.hilbert_at(&l);
-                let r1 = (hp - k.bp * q).abs() / (k.bp * k.mu * p);
-                worst = worst.max(r1);
-                if f.is_stick(zone) {
-                    let ln = m.normal.frame.locate(opx, omx);
-                    let (p0, _) = m.normal.tractions_at(&ln);
-                    let (_, hq0) = m.normal.hilbert_at(&ln);
-                    let r2 = (hq + k.bq * p - hq0 - k.bq * p0).abs() / (k.bq * p);
-                    worst = worst.max(r2);
-                    assert!(q.abs() <= k.mu * p * (1.0 + 1e-9), "|q| > mu p at {opx}");
-                }
-                assert!(p > 0.0);
-            }
-        }
+        let normal = &m.normal;
+        let worst = s.residual_between_points(&|opx, omx| {
+            let ln = normal.frame.locate(opx, omx);
+            let (p0, _) = normal.tractions_at(&ln);
+            let (_, hq0) = normal.hilbert_at(&ln);
+            hq0 + k.bq * p0
+        });
         assert!(worst < res_tol, "largest relative residual {worst:e}");
         let (w1, c2) = m.stick_set();
         for f in [0.1, 0.5, 0.9] {

@@ -24,7 +24,7 @@
 //! answer whose leading zone slips backwards there.
 
 #[cfg(test)]
-mod tests;
+pub(crate) mod tests;
 
 use super::frame::{Kind, Sizes, Solved, ZoneSpec, solve};
 use super::{
@@ -35,42 +35,200 @@ use crate::error::{Error, Result};
 use crate::numerics::roots::chord2;
 use crate::problem::Coupling;
 
-/// A point where the loaded state's forcing r* = H[q*] + bq p* is singular, as 1 + x, and
-/// the side on which it carries |x - x0|^g (the side that slipped in the state that made it).
+/// A point where the data's forcing r* = H[q*] + bq p* is singular, as 1 + x, and the side
+/// on which it carries |x - x0|^g (the side that slipped in the state that made it).
 #[derive(Clone, Copy, Debug)]
-struct Kink {
-    opx: f64,
-    slip_left: bool,
+pub(crate) struct Kink {
+    pub(crate) opx: f64,
+    pub(crate) slip_left: bool,
     /// Whether the forcing continued from the right across the point is singular there (not
     /// at c1*, where the forcing right of it is the normal load's r0, analytic at c1*).
-    seen_from_right: bool,
+    pub(crate) seen_from_right: bool,
+    /// The same from the left (poles beyond the stick set's right end, [`specs`]).
+    pub(crate) seen_from_left: bool,
+}
+
+impl Kink {
+    /// The kink of the mirrored state (x -> -x): the sides swap.
+    fn mirrored(self) -> Self {
+        Kink {
+            opx: 2.0 - self.opx,
+            slip_left: !self.slip_left,
+            seen_from_right: self.seen_from_left,
+            seen_from_left: self.seen_from_right,
+        }
+    }
+}
+
+/// The end state of the previous branch, the data of a branch whose stick set has stuck
+/// since that state (docs/theory_tangential.md sections 13 and 15): the loaded state for the
+/// first unloading, an unloading state for the reloading (through [`Mirror`]).
+pub(crate) trait Start {
+    fn coupling(&self) -> &Coupling;
+    /// Q/P at this state, in its own frame.
+    fn qp(&self) -> f64;
+    /// The forcing's kinks, in increasing 1 + x.
+    fn kinks(&self) -> Vec<Kink>;
+    /// (p, q) at x given by (1 + x, 1 - x).
+    fn tractions(&self, opx: f64, omx: f64) -> (f64, f64);
+    /// The forcing H[q] + bq p at x given by (1 + x, 1 - x).
+    fn forcing(&self, opx: f64, omx: f64) -> f64;
+    /// The loads Q/P from the normal load to this state, in the contact's frame (for the
+    /// grid start).
+    fn path(&self) -> Vec<f64>;
+    /// +1 in the contact's frame, -1 when the state is seen mirrored ([`Mirror`]).
+    fn sign(&self) -> f64;
 }
 
 /// The loaded state's kinks: c1* (edge zone left of it), -c where the loaded stick set holds
 /// it (the normal load's slip zone left of it), c2* (the leading zone right of it).
-fn kinks(m: &Monotonic) -> Vec<Kink> {
-    let (w1, c2) = m.stick_set();
-    let mut out = Vec::new();
-    if w1 > 0.0 {
+impl Start for Monotonic {
+    fn coupling(&self) -> &Coupling {
+        &self.k
+    }
+    fn qp(&self) -> f64 {
+        self.qp
+    }
+    fn kinks(&self) -> Vec<Kink> {
+        let (w1, c2) = self.stick_set();
+        let mut out = Vec::new();
+        if w1 > 0.0 {
+            out.push(Kink {
+                opx: w1,
+                slip_left: true,
+                seen_from_right: false,
+                seen_from_left: true,
+            });
+        }
+        if c2 > -self.c {
+            out.push(Kink {
+                opx: 1.0 - self.c,
+                slip_left: true,
+                seen_from_right: true,
+                seen_from_left: true,
+            });
+        }
         out.push(Kink {
-            opx: w1,
+            opx: 1.0 + c2,
+            slip_left: false,
+            seen_from_right: true,
+            seen_from_left: true,
+        });
+        out
+    }
+    fn tractions(&self, opx: f64, omx: f64) -> (f64, f64) {
+        self.level.state.tractions(opx, omx)
+    }
+    fn forcing(&self, opx: f64, omx: f64) -> f64 {
+        forcing_of(&self.level.state, self.k.bq, opx, omx)
+    }
+    fn path(&self) -> Vec<f64> {
+        vec![self.qp]
+    }
+    fn sign(&self) -> f64 {
+        1.0
+    }
+}
+
+/// H[q] + bq p of a solved state at x given by (1 + x, 1 - x).
+fn forcing_of(s: &Solved, bq: f64, opx: f64, omx: f64) -> f64 {
+    let l = s.frame.locate(opx, omx);
+    let (p, _) = s.tractions_at(&l);
+    let (_, hq) = s.hilbert_at(&l);
+    hq + bq * p
+}
+
+/// A state seen mirrored, x -> -x and q -> -q (section 5): p(-x), -q(-x), and H[q](-x)
+/// (H changes sign under the reflection), so the forcing H[q] + bq p is read at -x. A branch
+/// with Q rising from it is the mirror of a branch with Q falling from the mirrored state.
+pub(crate) struct Mirror<'a> {
+    pub(crate) inner: &'a dyn Start,
+}
+
+impl Start for Mirror<'_> {
+    fn coupling(&self) -> &Coupling {
+        self.inner.coupling()
+    }
+    fn qp(&self) -> f64 {
+        -self.inner.qp()
+    }
+    fn kinks(&self) -> Vec<Kink> {
+        self.inner
+            .kinks()
+            .into_iter()
+            .rev()
+            .map(Kink::mirrored)
+            .collect()
+    }
+    fn tractions(&self, opx: f64, omx: f64) -> (f64, f64) {
+        let (p, q) = self.inner.tractions(omx, opx);
+        (p, -q)
+    }
+    fn forcing(&self, opx: f64, omx: f64) -> f64 {
+        self.inner.forcing(omx, opx)
+    }
+    fn path(&self) -> Vec<f64> {
+        self.inner.path()
+    }
+    fn sign(&self) -> f64 {
+        -self.inner.sign()
+    }
+}
+
+/// An unloading state as the data of the next branch: its forcing is singular at a1 (the
+/// leading zone left of it) and a2 (the trailing zone right of it), and inside (a1, a2),
+/// where it equals its own data's forcing by (U2), at that data's kinks there. On (a1, a2)
+/// the forcing is read from the data (exact by (U2), where the state's own H[q] + bq p
+/// carries its residual), elsewhere from the state.
+impl<D: Start + ?Sized> Start for Unloading<'_, D> {
+    fn coupling(&self) -> &Coupling {
+        self.loaded.coupling()
+    }
+    fn qp(&self) -> f64 {
+        self.qp
+    }
+    fn kinks(&self) -> Vec<Kink> {
+        let (wa, hi) = (self.level.wa, 2.0 - self.level.w2.unwrap_or(0.0));
+        let mut out = vec![Kink {
+            opx: wa,
             slip_left: true,
             seen_from_right: false,
-        });
+            seen_from_left: true,
+        }];
+        out.extend(
+            self.loaded
+                .kinks()
+                .into_iter()
+                .filter(|c| c.opx > wa && c.opx < hi),
+        );
+        if self.level.w2.is_some() {
+            out.push(Kink {
+                opx: hi,
+                slip_left: false,
+                seen_from_right: true,
+                seen_from_left: false,
+            });
+        }
+        out
     }
-    if c2 > -m.c {
-        out.push(Kink {
-            opx: 1.0 - m.c,
-            slip_left: true,
-            seen_from_right: true,
-        });
+    fn tractions(&self, opx: f64, omx: f64) -> (f64, f64) {
+        self.level.state.tractions(opx, omx)
     }
-    out.push(Kink {
-        opx: 1.0 + c2,
-        slip_left: false,
-        seen_from_right: true,
-    });
-    out
+    fn forcing(&self, opx: f64, omx: f64) -> f64 {
+        if opx > self.level.wa && omx > self.level.w2.unwrap_or(0.0) {
+            self.loaded.forcing(opx, omx)
+        } else {
+            forcing_of(&self.level.state, self.loaded.coupling().bq, opx, omx)
+        }
+    }
+    fn path(&self) -> Vec<f64> {
+        let mut p = self.loaded.path();
+        p.push(self.loaded.sign() * self.qp);
+        p
+    }
+    fn sign(&self) -> f64 {
+        self.loaded.sign()
+    }
 }
 
 /// The unloading zones: the leading zone (-1, a1) of width `wa` = 1 + a1, the stick set
@@ -97,7 +255,7 @@ fn specs(k: &Coupling, kinks: &[Kink], wa: f64, w2: Option<f64>) -> Vec<ZoneSpec
         .fold(None, |a: Option<f64>, d| Some(a.map_or(d, |a| a.min(d))));
     let after = kinks
         .iter()
-        .filter(|c| c.opx >= hi - gap)
+        .filter(|c| c.opx >= hi - gap && c.seen_from_left)
         .map(|c| (c.opx - hi).max(gap))
         .fold(None, |a: Option<f64>, d| Some(a.map_or(d, |a| a.min(d))));
     let mut out = vec![ZoneSpec {
@@ -146,15 +304,15 @@ fn specs(k: &Coupling, kinks: &[Kink], wa: f64, w2: Option<f64>) -> Vec<ZoneSpec
     out
 }
 
-/// The fixed-geometry unloading solve at Q/P = `qp` from the loaded state `m`.
-pub(crate) fn unload_fixed(
-    m: &Monotonic,
+/// The fixed-geometry unloading solve at Q/P = `qp` from the state `m`.
+pub(crate) fn unload_fixed<D: Start + ?Sized>(
+    m: &D,
     wa: f64,
     w2: Option<f64>,
     qp: f64,
     level: usize,
 ) -> Result<Solved> {
-    let k = &m.k;
+    let k = m.coupling();
     let hi = 2.0 - w2.unwrap_or(0.0);
     if !(wa > 0.0 && wa < hi) {
         return Err(Error::InvalidArgument(format!(
@@ -163,18 +321,11 @@ pub(crate) fn unload_fixed(
             hi - 1.0
         )));
     }
-    let loaded = &m.level.state;
-    let bq = k.bq;
-    let forcing = |opx: f64, omx: f64| {
-        let l = loaded.frame.locate(opx, omx);
-        let (p, _) = loaded.tractions_at(&l);
-        let (_, hq) = loaded.hilbert_at(&l);
-        hq + bq * p
-    };
+    let forcing = |opx: f64, omx: f64| m.forcing(opx, omx);
     let n_sigma = if w2.is_some() { 2 } else { 1 };
     solve(
         *k,
-        &specs(k, &kinks(m), wa, w2),
+        &specs(k, &m.kinks(), wa, w2),
         Sizes::at(level),
         n_sigma,
         qp,
@@ -186,10 +337,11 @@ pub(crate) fn unload_fixed(
 /// full-stick increment is ((Q - Q*)/P) p0, so q/p0 moves uniformly and reaches -mu first
 /// where q*/p0 is least, at the corner); None for bp > 0. q*/p0 = q*/p* is read at
 /// 1 + x = 1e-12, where its (1 + x)-term is below 1e-12.
-pub(crate) fn first_slip(m: &Monotonic) -> Option<f64> {
-    (m.k.bp == 0.0).then(|| {
+pub(crate) fn first_slip<D: Start + ?Sized>(m: &D) -> Option<f64> {
+    let k = m.coupling();
+    (k.bp == 0.0).then(|| {
         let (p, q) = m.tractions(1e-12, 2.0 - 1e-12);
-        m.qp() - (m.k.mu + q / p)
+        m.qp() - (k.mu + q / p)
     })
 }
 
@@ -208,8 +360,8 @@ pub(crate) struct Level {
 /// method with a Jacobian by differences (`jac`, computed if None; the chord kept while the
 /// steps halve, as [`super::monotonic_level`]); a secant in wa on the one constant when
 /// bp = 0.
-pub(crate) fn unload_level(
-    m: &Monotonic,
+pub(crate) fn unload_level<D: Start + ?Sized>(
+    m: &D,
     wa: f64,
     w2: Option<f64>,
     qp: f64,
@@ -296,9 +448,9 @@ pub(crate) const CHECK_FRACTIONS: [f64; 9] = [1e-8, 1e-6, 1e-4, 1e-2, 0.1, 0.3, 
 pub(crate) type Slips = Vec<(f64, f64)>;
 
 /// The unloading state with error estimates.
-pub(crate) struct Unloading<'a> {
-    /// The loaded state at Q* (the data).
-    pub(crate) loaded: &'a Monotonic,
+pub(crate) struct Unloading<'a, D: Start + ?Sized = Monotonic> {
+    /// The state at Q* (the data: the loaded state, or a mirrored one, [`Mirror`]).
+    pub(crate) loaded: &'a D,
     pub(crate) qp: f64,
     pub(crate) level: Level,
     /// Bounds on |a1 - a1_exact| + |a2 - a2_exact| and on the traction norm (T1) from the
@@ -317,21 +469,23 @@ pub(crate) struct Unloading<'a> {
 /// Q* and unloaded in one step each); then, for bp > 0, w2 from the first sign change of the
 /// border value at a2, sigma_0 + sigma_1, at level 1 scanning w2 = 0.3, 0.03, ... down to
 /// [`W1_MIN`] (as the loading's scan of w1).
-pub(crate) fn unload<'a>(
-    m: &'a Monotonic,
+pub(crate) fn unload<'a, D: Start + ?Sized>(
+    m: &'a D,
     qp: f64,
     tol: f64,
     traction_tol: f64,
-) -> Result<Unloading<'a>> {
+) -> Result<Unloading<'a, D>> {
     check_load(m, qp)?;
-    let k = &m.k;
-    let q_star = m.qp();
+    let k = m.coupling();
     let mut solves = 0;
     let wa0 = {
         let mut h = crate::lcp::history::History::new(k, START_PANELS)?;
-        h.load(q_star, 1)?;
-        h.load(qp, 1)?;
-        let a1 = h.state().stick.0;
+        for q in m.path() {
+            h.load(q, 1)?;
+        }
+        h.load(m.sign() * qp, 1)?;
+        let (s0, s1) = h.state().stick;
+        let a1 = if m.sign() > 0.0 { s0 } else { -s1 };
         if a1.is_finite() {
             (1.0 + a1).clamp(0.5 / START_PANELS as f64, 1.5)
         } else {
@@ -357,8 +511,8 @@ pub(crate) fn unload<'a>(
 }
 
 /// Q/P must lie on the branch: -mu < Q/P < Q*/P, and below the first-slip load when bp = 0.
-fn check_load(m: &Monotonic, qp: f64) -> Result<()> {
-    let (k, q_star) = (&m.k, m.qp());
+fn check_load<D: Start + ?Sized>(m: &D, qp: f64) -> Result<()> {
+    let (k, q_star) = (m.coupling(), m.qp());
     if !(qp < q_star && qp > -k.mu) {
         return Err(Error::InvalidArgument(format!(
             "exact unloading: needs -mu < Q/P < Q*/P (Q/P = {qp}, Q*/P = {q_star}, mu = {})",
@@ -382,13 +536,13 @@ fn check_load(m: &Monotonic, qp: f64) -> Result<()> {
 /// of w2; the ladder from level 1 (started at prev's last level but one, it took more time
 /// than the cold start on the ply: each solve at levels 4-5 costs several at levels 1-2,
 /// section 14), and the cold start [`unload`] if that ladder does not converge.
-pub(crate) fn unload_from<'a>(
-    prev: &Unloading<'a>,
-    before: Option<&Unloading<'a>>,
+pub(crate) fn unload_from<'a, D: Start + ?Sized>(
+    prev: &Unloading<'a, D>,
+    before: Option<&Unloading<'a, D>>,
     qp: f64,
     tol: f64,
     traction_tol: f64,
-) -> Result<Unloading<'a>> {
+) -> Result<Unloading<'a, D>> {
     let m = prev.loaded;
     check_load(m, qp)?;
     let (wa, w2) = (prev.level.wa, prev.level.w2);
@@ -415,16 +569,16 @@ pub(crate) fn unload_from<'a>(
 
 /// The ladder of levels `first`, `first` + 1, ... up to [`MAX_LEVEL`] from (wa, w2), until
 /// two levels agree; the answer is checked for admissibility.
-fn ladder<'a>(
-    m: &'a Monotonic,
+fn ladder<'a, D: Start + ?Sized>(
+    m: &'a D,
     qp: f64,
     tol: f64,
     traction_tol: f64,
     start: (f64, Option<f64>),
     first: usize,
     mut solves: usize,
-) -> Result<Unloading<'a>> {
-    let g = edge_exponent(&m.k);
+) -> Result<Unloading<'a, D>> {
+    let g = edge_exponent(m.coupling());
     let mut jac = None;
     let mut trace = Vec::new();
     let mut prev: Option<Level> = None;
@@ -467,7 +621,7 @@ fn ladder<'a>(
     )))
 }
 
-impl Unloading<'_> {
+impl<D: Start + ?Sized> Unloading<'_, D> {
     /// Err(NoAdmissibleSolution) when a slip zone slips against its friction ((T5); the
     /// three-zone pattern does not hold there, section 13).
     pub(crate) fn admissible(&self) -> Result<()> {
@@ -504,15 +658,8 @@ impl Unloading<'_> {
     /// The slip's slope relative to the punch since Q*, per pi B P:
     /// -(bq (p - p*) + H[q] - H[q*]) (zero on the stick set).
     pub(crate) fn slip_slope(&self, opx: f64, omx: f64) -> f64 {
-        let s = &self.level.state;
-        let l = s.frame.locate(opx, omx);
-        let (p, _) = s.tractions_at(&l);
-        let (_, hq) = s.hilbert_at(&l);
-        let loaded = &self.loaded.level.state;
-        let ls = loaded.frame.locate(opx, omx);
-        let (ps, _) = loaded.tractions_at(&ls);
-        let (_, hqs) = loaded.hilbert_at(&ls);
-        -(self.loaded.k.bq * (p - ps) + hq - hqs)
+        let own = forcing_of(&self.level.state, self.loaded.coupling().bq, opx, omx);
+        -(own - self.loaded.forcing(opx, omx))
     }
 
     /// The slip since Q* at x (per pi B P), integrated from the nearer stick end by
@@ -524,7 +671,7 @@ impl Unloading<'_> {
         if opx < wa {
             // s(x) = -int_x^{a1} slope, in 1 + x
             let mut cuts = vec![opx, wa];
-            for c in kinks(self.loaded) {
+            for c in self.loaded.kinks() {
                 if c.opx > opx && c.opx < wa {
                     cuts.push(c.opx);
                 }
@@ -549,7 +696,7 @@ impl Unloading<'_> {
     pub(crate) fn zone_slips(&self) -> (Slips, Slips) {
         let (wa, w2) = (self.level.wa, self.level.w2.unwrap_or(0.0));
         let mut marks: Vec<f64> = CHECK_FRACTIONS.iter().map(|f| f * wa).collect();
-        for c in kinks(self.loaded) {
+        for c in self.loaded.kinks() {
             if c.opx < wa {
                 marks.push(c.opx);
             }
@@ -578,10 +725,10 @@ impl Unloading<'_> {
     /// mu int p s over the leading zone (per pi B P^2): the energy the slip since Q* would
     /// have dissipated under the present pressure, by parts as [`dissipation`].
     pub(crate) fn slip_work(&self) -> f64 {
-        let k = &self.loaded.k;
+        let k = self.loaded.coupling();
         let wa = self.level.wa;
         let mut cuts = vec![0.0, wa];
-        for c in kinks(self.loaded) {
+        for c in self.loaded.kinks() {
             if c.opx > 0.0 && c.opx < wa {
                 cuts.push(c.opx);
             }
@@ -596,7 +743,7 @@ impl Unloading<'_> {
     /// int x p dx, the moment the guided punch carries (per P a).
     pub(crate) fn moment(&self) -> f64 {
         let s = &self.level.state;
-        contact_rule(edge_exponent(&self.loaded.k), s, s)
+        contact_rule(edge_exponent(self.loaded.coupling()), s, s)
             .into_iter()
             .map(|(opx, omx, w)| {
                 let x = if opx < omx { opx - 1.0 } else { 1.0 - omx };
@@ -640,11 +787,11 @@ fn graded(a: f64, b: f64, f: &dyn Fn(f64) -> f64) -> f64 {
 /// (-1, a1_b). With o = 1 + x and the slip increment ds(o) = -int_o^{wa_b} dslope (zero at
 /// a1_b), integration by parts gives -int_0^{wa_b} dslope(o) M(o) do, M(o) = int_0^o mu p_mid,
 /// where dslope = -(bq (p_b - p_a) + H[q_b] - H[q_a]) needs no loaded state.
-pub(crate) fn dissipation(a: &Unloading, b: &Unloading) -> f64 {
-    let k = &a.loaded.k;
+pub(crate) fn dissipation<D: Start + ?Sized>(a: &Unloading<D>, b: &Unloading<D>) -> f64 {
+    let k = a.loaded.coupling();
     let (sa, sb) = (&a.level.state, &b.level.state);
     let mut cuts = vec![0.0, a.level.wa, b.level.wa];
-    for c in kinks(a.loaded) {
+    for c in a.loaded.kinks() {
         if c.opx > 0.0 && c.opx < b.level.wa {
             cuts.push(c.opx);
         }

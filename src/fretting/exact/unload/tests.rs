@@ -6,8 +6,7 @@
 //! strong coupling, where the three-zone pattern is refused (docs/theory_tangential.md
 //! section 13); the dissipation of the first unloading against the grid's (section 14).
 
-use super::super::frame::Loc;
-use super::super::{contact_rule, monotonic};
+use super::super::{monotonic, quadrature_forces};
 use super::*;
 use crate::Material;
 use crate::lcp::history::{History, Zone};
@@ -40,7 +39,8 @@ fn grid(k: &Coupling, n: usize, q_star: f64, qp: f64) -> History {
 /// (Q* - Q)/P = int_{-1}^{a1} (mu p0 + q*) sqrt((1 - s)/(a1 - s)) ds, by Gauss-Jacobi with
 /// the weight ((a1 - s)(1 + s))^(-1/2) (mu p0 + q* carries (1 + s)^(-1/2) and is analytic
 /// inside the loaded stick set); p0 = 1/(pi sqrt(1 - s^2)), q* from the loading solver.
-fn t13(m: &Monotonic, a1: f64) -> f64 {
+pub(crate) fn t13<D: Start + ?Sized>(m: &D, a1: f64) -> f64 {
+    let mu = m.coupling().mu;
     let (t, w) = gauss_jacobi(40, -0.5, -0.5);
     t.iter()
         .zip(&w)
@@ -49,7 +49,7 @@ fn t13(m: &Monotonic, a1: f64) -> f64 {
             let omx = 2.0 - opx;
             let p0 = 1.0 / (std::f64::consts::PI * (opx * omx).sqrt());
             let (_, q) = m.tractions(opx, omx);
-            w * (m.k.mu * p0 + q) * opx.sqrt() * omx.sqrt()
+            w * (mu * p0 + q) * opx.sqrt() * omx.sqrt()
         })
         .sum()
 }
@@ -196,45 +196,12 @@ fn equilibrium_residuals_and_inequalities() {
         let u = unload(&m, qp, tols.0, tols.1).unwrap();
         let g = edge_exponent(&k);
         let s = &u.level.state;
-        let (mut ip, mut iq) = (0.0, 0.0);
-        for (opx, omx, w) in contact_rule(g, s, s) {
-            let (p, q) = u.tractions(opx, omx);
-            ip += w * p;
-            iq += w * q;
-        }
+        let (ip, iq) = quadrature_forces(g, s);
         assert!(
             (ip - 1.0).abs() < 1e-9 && (iq - qp).abs() < 1e-9,
             "int p = {ip}, int q = {iq}"
         );
-        let loaded = &m.level.state;
-        let f = &s.frame;
-        let mut worst = 0.0f64;
-        for zone in 0..f.zone_count() {
-            let len = f.zone_len(zone);
-            for i in 0..37 {
-                let th = (i as f64 + 1.0) * std::f64::consts::PI / 38.0;
-                let (a, b) = ((0.5 * th).sin().powi(2), (0.5 * th).cos().powi(2));
-                let l = Loc {
-                    zone,
-                    from_lo: len * a,
-                    to_hi: len * b,
-                };
-                let (opx, omx) = f.offsets(&l);
-                let (p, q) = s.tractions_at(&l);
-                let (hp, hq) = s.hilbert_at(&l);
-                let scale = if k.bp > 0.0 { k.bp * k.mu * p } else { p };
-                worst = worst.max((hp - k.bp * q).abs() / scale);
-                if f.is_stick(zone) {
-                    let ls = loaded.frame.locate(opx, omx);
-                    let (ps, _) = loaded.tractions_at(&ls);
-                    let (_, hqs) = loaded.hilbert_at(&ls);
-                    let r2 = (hq + k.bq * p - hqs - k.bq * ps).abs() / (k.bq * p);
-                    worst = worst.max(r2);
-                    assert!(q.abs() <= k.mu * p * (1.0 + 1e-9), "|q| > mu p at {opx}");
-                }
-                assert!(p > 0.0);
-            }
-        }
+        let worst = s.residual_between_points(&|opx, omx| m.forcing(opx, omx));
         println!("bp = {}: largest relative residual {worst:e}", k.bp);
         assert!(worst < res_tol, "largest relative residual {worst:e}");
         let (leading, trailing) = u.zone_slips();

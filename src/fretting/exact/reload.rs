@@ -1,0 +1,112 @@
+//! The exact reloading branch (docs/theory_tangential.md section 15): after the first
+//! unloading to Q** (= -Q* in a cycle), Q rises again. With the unloaded state as data the
+//! branch is the first unloading's problem mirrored (section 5): under x -> -x, q -> -q the
+//! reloading from the state at Q** is the unloading from the mirrored state at -Q**, to -Q.
+//! So it is solved by [`unload`] on [`Mirror`] of the unloaded state, and read back mirrored:
+//!
+//! - (R1) H[p] = bp q on (-1, 1);
+//! - (R2) on the stick set (b1, b2): H[q] + bq p = H[q**] + bq p** (stuck since Q**);
+//! - (R3) on the new leading zone (b2, 1): q = +mu p (slip in -x since Q**); on the edge zone
+//!   (-1, b1): q = -mu p (slip in +x, the unloading's leading zone's direction);
+//! - (R4) int p = 1, int q = Q/P; bounded tractions at b1 and b2.
+//!
+//! With bp = 0 there is no zone at -1, and the branch sticks fully up to the first-slip load
+//! Q_s = Q** + P (mu - q**/p0 at x = +1) ((T15a); loads below it are refused with that
+//! formula); above it b2 solves (T15). For the ply's bq at Q* = 0.6 mu P, Q_s = 1.09 Q*: the
+//! cycle shakes down after the first unloading.
+//!
+//! Limits (section 15): for bp > 0 the unloaded state's thin trailing zone at +1 sits on the
+//! friction bound and the reloading pushes it towards the bound, the mirror of the
+//! unloading's corner above -0.48 Q* (section 13). On the ply the three-zone answer does not
+//! converge there (the levels' tractions stay 5e-4 .. 9e-3 apart) and slips backwards at +1:
+//! it is refused (NoConvergence or NoAdmissibleSolution) along the whole branch.
+
+#[cfg(test)]
+mod tests;
+
+use super::unload::{Mirror, Start, Unloading, unload};
+use crate::error::{Error, Result};
+
+/// The reloading state: the unloading state of the mirrored problem, read back mirrored.
+pub(crate) struct Reloading<'a, 'b> {
+    pub(crate) mirrored: Unloading<'a, Mirror<'b>>,
+}
+
+/// The reloading state at Q/P = qp (Q**/P < qp < mu) from the state `data` (the unloaded
+/// state, seen mirrored: `Mirror { inner: &unloaded }`), b1, b2 to `tol` and the tractions
+/// to `traction_tol` ([`unload`]'s ladder, start and admissibility check, in the mirrored
+/// frame).
+pub(crate) fn reload<'a, 'b>(
+    data: &'a Mirror<'b>,
+    qp: f64,
+    tol: f64,
+    traction_tol: f64,
+) -> Result<Reloading<'a, 'b>> {
+    let (q_low, mu) = (-data.qp(), data.coupling().mu);
+    if !(qp > q_low && qp < mu) {
+        return Err(Error::InvalidArgument(format!(
+            "exact reloading: needs Q**/P < Q/P < mu (Q/P = {qp}, Q**/P = {q_low}, mu = {mu})"
+        )));
+    }
+    unload(data, -qp, tol, traction_tol)
+        .map(|mirrored| Reloading { mirrored })
+        .map_err(|e| {
+            // the unloading's messages speak of the mirrored frame: say so
+            let frame = |m: String| {
+                format!(
+                    "exact reloading to Q/P = {qp}, solved as the mirrored unloading \
+                     (x -> -x, q -> -q, docs/theory_tangential.md section 15): {m}"
+                )
+            };
+            match e {
+                Error::InvalidArgument(m) => Error::InvalidArgument(frame(m)),
+                Error::NoConvergence(m) => Error::NoConvergence(frame(m)),
+                Error::NoAdmissibleSolution(m) => Error::NoAdmissibleSolution(frame(m)),
+                other => other,
+            }
+        })
+}
+
+impl Reloading<'_, '_> {
+    /// Q/P.
+    pub(crate) fn qp(&self) -> f64 {
+        -self.mirrored.qp
+    }
+
+    /// (b1, b2), the stick set.
+    pub(crate) fn stick_set(&self) -> (f64, f64) {
+        let (a1, a2) = self.mirrored.stick_set();
+        (-a2, -a1)
+    }
+
+    fn as_mirror(&self) -> Mirror<'_> {
+        Mirror {
+            inner: &self.mirrored,
+        }
+    }
+}
+
+/// A reloading state as the data of the next unloading: the mirror of its mirrored state.
+impl Start for Reloading<'_, '_> {
+    fn coupling(&self) -> &crate::problem::Coupling {
+        self.mirrored.coupling()
+    }
+    fn qp(&self) -> f64 {
+        self.as_mirror().qp()
+    }
+    fn kinks(&self) -> Vec<super::unload::Kink> {
+        self.as_mirror().kinks()
+    }
+    fn tractions(&self, opx: f64, omx: f64) -> (f64, f64) {
+        self.as_mirror().tractions(opx, omx)
+    }
+    fn forcing(&self, opx: f64, omx: f64) -> f64 {
+        self.as_mirror().forcing(opx, omx)
+    }
+    fn path(&self) -> Vec<f64> {
+        self.as_mirror().path()
+    }
+    fn sign(&self) -> f64 {
+        self.as_mirror().sign()
+    }
+}
