@@ -76,68 +76,287 @@ pub(crate) fn constrained(
     a: &[f64],
     cols: usize,
     b: &[f64],
-    mut cons: Vec<(Vec<f64>, f64)>,
+    cons: Vec<(Vec<f64>, f64)>,
     pivot_cols: usize,
 ) -> Result<Vec<f64>, ConstrainedFailure> {
-    let mut pivots: Vec<usize> = Vec::new();
-    for i in 0..cons.len() {
-        let row = &cons[i].0;
-        let j = (0..pivot_cols)
-            .filter(|j| !pivots.contains(j))
-            .max_by(|&p, &q| row[p].abs().total_cmp(&row[q].abs()))
-            .unwrap_or(0);
-        let piv = cons[i].0[j];
-        if piv == 0.0 || !piv.is_finite() {
-            return Err(ConstrainedFailure::DependentConstraints);
-        }
-        for v in &mut cons[i].0 {
-            *v /= piv;
-        }
-        cons[i].1 /= piv;
-        let (row, d) = cons[i].clone();
-        for (i2, (other, od)) in cons.iter_mut().enumerate() {
-            if i2 != i {
-                let f = other[j];
-                for (o, r) in other.iter_mut().zip(&row) {
-                    *o -= f * r;
-                }
-                *od -= f * d;
-            }
-        }
-        pivots.push(j);
+    let e = Elimination::new(a, cols, b, cons, pivot_cols)?;
+    let x = LeastSquares::pivoted().solve(&e.reduced, e.keep.len(), &e.rhs);
+    e.complete(&x)
+}
+
+/// [`constrained`] for two nested column sets at once: the first `inner` columns (the
+/// constraints' pivots among the first `pivot_cols <= inner` of them), and all `cols`. One
+/// Householder QR serves both ([`nested_qr_solve`]): its pivots are sought among the inner
+/// columns first, so that its leading block is the inner problem's own factorisation.
+/// Returns (inner solution, padded with zeros to `cols`, and the full one).
+pub(crate) fn constrained_nested(
+    a: &[f64],
+    cols: usize,
+    b: &[f64],
+    cons: Vec<(Vec<f64>, f64)>,
+    pivot_cols: usize,
+    inner: usize,
+) -> Result<(Vec<f64>, Vec<f64>), ConstrainedFailure> {
+    let e = Elimination::new(a, cols, b, cons, pivot_cols)?;
+    // the kept columns keep their order, so the inner ones still come first
+    let split = e.keep.iter().filter(|&&j| j < inner).count();
+    let [mut xi, xf] = nested_qr_solve(&e.reduced, e.keep.len(), &e.rhs, split);
+    xi.resize(e.keep.len(), 0.0);
+    let mut inner_full = e.complete(&xi)?;
+    for v in &mut inner_full[inner..] {
+        *v = 0.0;
     }
-    let keep: Vec<usize> = (0..cols).filter(|j| !pivots.contains(j)).collect();
-    let m = keep.len();
-    let rows = b.len();
-    let mut reduced = vec![0.0; rows * m];
-    let mut rhs = vec![0.0; rows];
-    for i in 0..rows {
-        let row = &a[i * cols..(i + 1) * cols];
-        for (jj, &j) in keep.iter().enumerate() {
-            reduced[i * m + jj] = row[j]
+    Ok((inner_full, e.complete(&xf)?))
+}
+
+/// The constraints eliminated from a least-squares problem ([`constrained`]).
+struct Elimination {
+    cons: Vec<(Vec<f64>, f64)>,
+    pivots: Vec<usize>,
+    keep: Vec<usize>,
+    cols: usize,
+    /// The reduced matrix (row-major, `keep.len()` columns) and right-hand side.
+    reduced: Vec<f64>,
+    rhs: Vec<f64>,
+}
+
+impl Elimination {
+    fn new(
+        a: &[f64],
+        cols: usize,
+        b: &[f64],
+        mut cons: Vec<(Vec<f64>, f64)>,
+        pivot_cols: usize,
+    ) -> Result<Self, ConstrainedFailure> {
+        let mut pivots: Vec<usize> = Vec::new();
+        for i in 0..cons.len() {
+            let row = &cons[i].0;
+            let j = (0..pivot_cols)
+                .filter(|j| !pivots.contains(j))
+                .max_by(|&p, &q| row[p].abs().total_cmp(&row[q].abs()))
+                .unwrap_or(0);
+            let piv = cons[i].0[j];
+            if piv == 0.0 || !piv.is_finite() {
+                return Err(ConstrainedFailure::DependentConstraints);
+            }
+            for v in &mut cons[i].0 {
+                *v /= piv;
+            }
+            cons[i].1 /= piv;
+            let (row, d) = cons[i].clone();
+            for (i2, (other, od)) in cons.iter_mut().enumerate() {
+                if i2 != i {
+                    let f = other[j];
+                    for (o, r) in other.iter_mut().zip(&row) {
+                        *o -= f * r;
+                    }
+                    *od -= f * d;
+                }
+            }
+            pivots.push(j);
+        }
+        let keep: Vec<usize> = (0..cols).filter(|j| !pivots.contains(j)).collect();
+        let m = keep.len();
+        let rows = b.len();
+        let mut reduced = vec![0.0; rows * m];
+        let mut rhs = vec![0.0; rows];
+        for i in 0..rows {
+            let row = &a[i * cols..(i + 1) * cols];
+            for (jj, &j) in keep.iter().enumerate() {
+                reduced[i * m + jj] = row[j]
+                    - pivots
+                        .iter()
+                        .zip(&cons)
+                        .map(|(&pj, (k, _))| row[pj] * k[j])
+                        .sum::<f64>();
+            }
+            rhs[i] = b[i]
                 - pivots
                     .iter()
                     .zip(&cons)
-                    .map(|(&pj, (k, _))| row[pj] * k[j])
+                    .map(|(&pj, (_, d))| row[pj] * d)
                     .sum::<f64>();
         }
-        rhs[i] = b[i]
-            - pivots
-                .iter()
-                .zip(&cons)
-                .map(|(&pj, (_, d))| row[pj] * d)
-                .sum::<f64>();
+        Ok(Elimination {
+            cons,
+            pivots,
+            keep,
+            cols,
+            reduced,
+            rhs,
+        })
     }
-    let x = LeastSquares::pivoted().solve(&reduced, m, &rhs);
-    if x.iter().any(|v| !v.is_finite()) {
-        return Err(ConstrainedFailure::NotFinite);
+
+    /// The full solution from the reduced one: the eliminated coefficients from the
+    /// constraints.
+    fn complete(&self, x: &[f64]) -> Result<Vec<f64>, ConstrainedFailure> {
+        if x.iter().any(|v| !v.is_finite()) {
+            return Err(ConstrainedFailure::NotFinite);
+        }
+        let mut full = vec![0.0; self.cols];
+        for (jj, &j) in self.keep.iter().enumerate() {
+            full[j] = x[jj];
+        }
+        for (&pj, (k, d)) in self.pivots.iter().zip(&self.cons) {
+            full[pj] = d - self.keep.iter().map(|&j| k[j] * full[j]).sum::<f64>();
+        }
+        Ok(full)
     }
-    let mut full = vec![0.0; cols];
-    for (jj, &j) in keep.iter().enumerate() {
-        full[j] = x[jj];
+}
+
+/// Least squares min ||A x - b|| on the first `inner` columns of A and on all of them, from
+/// one Householder QR with column pivoting (A row-major with `n` columns, b.len() rows).
+///
+/// The pivot at each step is the remaining column of largest norm within the current group
+/// (the inner columns, then the rest), the norms downdated after each step and recomputed
+/// where cancellation has eaten half their digits (Businger & Golub's pivoting with LAPACK
+/// xLAQP2's safeguard). So the first `inner` steps are the inner problem's own pivoted QR,
+/// and its solution comes from the leading block of R. faer's column-pivoted QR pivots over
+/// all columns at once, and would need a second factorisation for the inner problem.
+/// Returns [inner solution (`inner` entries), full solution].
+pub(crate) fn nested_qr_solve(a: &[f64], n: usize, b: &[f64], inner: usize) -> [Vec<f64>; 2] {
+    let m = b.len();
+    // column-major copy
+    let mut q = vec![0.0; m * n];
+    for (i, row) in a.chunks_exact(n).enumerate() {
+        for (j, &v) in row.iter().enumerate() {
+            q[j * m + i] = v;
+        }
     }
-    for (&pj, (k, d)) in pivots.iter().zip(&cons) {
-        full[pj] = d - keep.iter().map(|&j| k[j] * full[j]).sum::<f64>();
+    let mut rhs = b.to_vec();
+    let mut perm: Vec<usize> = (0..n).collect();
+    let norm = |v: &[f64]| v.iter().map(|x| x * x).sum::<f64>().sqrt();
+    let mut vn1: Vec<f64> = q.chunks_exact(m).map(norm).collect();
+    let mut vn2 = vn1.clone();
+    let tol = f64::EPSILON.sqrt();
+    let steps = m.min(n);
+    for i in 0..steps {
+        let end = if i < inner { inner } else { n };
+        let p = (i..end).fold(i, |best, j| if vn1[j] > vn1[best] { j } else { best });
+        if p != i {
+            let (lo, hi) = q.split_at_mut(p * m);
+            lo[i * m..(i + 1) * m].swap_with_slice(&mut hi[..m]);
+            perm.swap(p, i);
+            vn1[p] = vn1[i];
+            vn2[p] = vn2[i];
+        }
+        let (head, tail) = q.split_at_mut((i + 1) * m);
+        let v = &mut head[i * m + i..];
+        let alpha = v[0];
+        let xnorm = norm(&v[1..]);
+        if xnorm == 0.0 {
+            continue;
+        }
+        let beta = -alpha.signum() * alpha.hypot(xnorm);
+        let tau = (beta - alpha) / beta;
+        let s = 1.0 / (alpha - beta);
+        v[1..].iter_mut().for_each(|x| *x *= s);
+        v[0] = 1.0;
+        let v = &*v;
+        let apply = |col: &mut [f64]| {
+            let d = tau * v.iter().zip(col.iter()).map(|(a, b)| a * b).sum::<f64>();
+            col.iter_mut().zip(v).for_each(|(c, a)| *c -= d * a);
+        };
+        for col in tail.chunks_exact_mut(m) {
+            apply(&mut col[i..]);
+        }
+        apply(&mut rhs[i..]);
+        head[i * m + i] = beta;
+        for (j, col) in (i + 1..n).zip(tail.chunks_exact(m)) {
+            if vn1[j] != 0.0 {
+                let t = (1.0 - (col[i].abs() / vn1[j]).powi(2)).max(0.0);
+                if t * (vn1[j] / vn2[j]).powi(2) <= tol {
+                    vn1[j] = norm(&col[i + 1..]);
+                    vn2[j] = vn1[j];
+                } else {
+                    vn1[j] *= t.sqrt();
+                }
+            }
+        }
     }
-    Ok(full)
+    let solve = |k: usize| {
+        let k = k.min(steps);
+        let mut x = vec![0.0; k];
+        for i in (0..k).rev() {
+            let s: f64 = (i + 1..k).map(|j| q[j * m + i] * x[j]).sum();
+            x[i] = (rhs[i] - s) / q[i * m + i];
+        }
+        x
+    };
+    let unpermute = |x: Vec<f64>, len: usize| {
+        let mut out = vec![0.0; len];
+        for (i, v) in x.into_iter().enumerate() {
+            out[perm[i]] = v;
+        }
+        out
+    };
+    [unpermute(solve(inner), inner), unpermute(solve(n), n)]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The nested QR against faer's column-pivoted QR on both column sets of a random
+    /// overdetermined system, and on a rank-deficient one (a repeated column) by residual.
+    #[test]
+    fn nested_qr_matches_faer() {
+        let (m, n, inner) = (60, 20, 13);
+        // a fixed pseudo-random matrix (linear congruential)
+        let mut state: u64 = 12345;
+        let mut next = || {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (state >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+        };
+        let a: Vec<f64> = (0..m * n).map(|_| next()).collect();
+        let b: Vec<f64> = (0..m).map(|_| next()).collect();
+        let [xi, xf] = nested_qr_solve(&a, n, &b, inner);
+        let sub: Vec<f64> = a
+            .chunks_exact(n)
+            .flat_map(|r| r[..inner].to_vec())
+            .collect();
+        let ri = LeastSquares::pivoted().solve(&sub, inner, &b);
+        let rf = LeastSquares::pivoted().solve(&a, n, &b);
+        let diff = |x: &[f64], y: &[f64]| {
+            x.iter()
+                .zip(y)
+                .map(|(a, b)| (a - b).abs())
+                .fold(0.0, f64::max)
+        };
+        assert!(diff(&xi, &ri) < 1e-13, "inner: {:e}", diff(&xi, &ri));
+        assert!(diff(&xf, &rf) < 1e-13, "full: {:e}", diff(&xf, &rf));
+        // the inner pivots stay inner: a column of the outer group nearly equal to an inner
+        // one changes nothing in the inner solution, and the full residual is no worse than
+        // without that column
+        let mut a2 = a.clone();
+        for row in a2.chunks_exact_mut(n) {
+            row[n - 1] = row[0] * (1.0 + 1e-9 * next());
+        }
+        let [xi2, xf2] = nested_qr_solve(&a2, n, &b, inner);
+        assert!(diff(&xi2, &ri) < 1e-13);
+        let resid = |x: &[f64]| {
+            a2.chunks_exact(n)
+                .zip(&b)
+                .map(|(r, bi)| (r.iter().zip(x).map(|(a, x)| a * x).sum::<f64>() - bi).powi(2))
+                .sum::<f64>()
+                .sqrt()
+        };
+        let best = {
+            let sub2: Vec<f64> = a2
+                .chunks_exact(n)
+                .flat_map(|r| r[..n - 1].to_vec())
+                .collect();
+            let mut x = LeastSquares::pivoted().solve(&sub2, n - 1, &b);
+            x.push(0.0);
+            resid(&x)
+        };
+        assert!(
+            resid(&xf2) <= best * (1.0 + 1e-6),
+            "{} {}",
+            resid(&xf2),
+            best
+        );
+    }
 }

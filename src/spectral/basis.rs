@@ -244,6 +244,20 @@ impl Block {
         self.family.weight_factors(y)
     }
 
+    /// The columns of a coarser block: all but the `degrees` highest polynomial degrees and
+    /// `poles` of the poles, every other one from the second nearest on (so that the rest
+    /// still spans the cluster's decades; [`super::system::Basis::coarse_columns`]).
+    pub(crate) fn coarse_columns(&self, degrees: usize, poles: usize) -> Vec<bool> {
+        let nd = self.degrees.len();
+        let np = self.poles.len();
+        let drop_d = degrees.min(nd.saturating_sub(1));
+        let drop_p = poles.min(np / 2);
+        (0..nd)
+            .map(|i| i < nd - drop_d)
+            .chain((0..np).map(|i| i % 2 == 0 || i / 2 >= drop_p))
+            .collect()
+    }
+
     /// Length of the scratch buffer the evaluations need.
     pub(crate) fn scratch(&self) -> usize {
         self.family.len()

@@ -26,7 +26,7 @@ mod tests;
 use crate::numerics::quadrature::{gauss_jacobi, gauss_legendre};
 use crate::problem::StickEdge;
 pub(crate) use system::Constants;
-use system::{Fixed, Sizes, solve_fixed};
+use system::{Fixed, Sizes, solve_fixed, solve_fixed_pair};
 
 /// Smallest edge exponent g the bases serve (large friction, g ~ 1/(pi b* mu~)). Measured on
 /// the grid of `coupled::tests::small_g_against_the_panels` (b* = 0.35 .. 0.99 in 8 rows, the
@@ -203,10 +203,9 @@ pub(crate) fn from_edge(
     if !serves(k, lc) {
         return None;
     }
-    let edge = StickEdge::from_logit(lc);
-    let base = sigma_at(k, lc, Sizes::at(FIRST_LEVEL, edge.c, edge.one_minus_c))?;
     let mut first = First {
-        base,
+        lc,
+        base: None,
         rules: Rules::new(k.g),
         measured: None,
     };
@@ -316,10 +315,11 @@ const SLOPE_FLOOR: f64 = 0.0125;
 /// twice those.
 const RATE_BOUND: (f64, f64) = (4.0, 8.0);
 
-/// Level 1 at the starting lc, the Gauss rules of [`distance`] for its g, and, once measured,
-/// sigma's slope and the tractions' move per unit of lc.
+/// The starting lc with level 1 there (solved on first use), the Gauss rules of [`distance`]
+/// for its g, and, once measured, sigma's slope and the tractions' move per unit of lc.
 struct First {
-    base: Level,
+    lc: f64,
+    base: Option<Level>,
     rules: Rules,
     measured: Option<Sensitivity>,
 }
@@ -332,18 +332,32 @@ struct Sensitivity {
 }
 
 impl First {
+    /// Level 1 at the starting lc, solved on first use.
+    fn base(&mut self, k: Constants) -> Option<&Level> {
+        if self.base.is_none() {
+            let e = StickEdge::from_logit(self.lc);
+            self.base = Some(sigma_at(
+                k,
+                self.lc,
+                Sizes::at(FIRST_LEVEL, e.c, e.one_minus_c),
+            )?);
+        }
+        self.base.as_ref()
+    }
+
     /// The slope and the rate, measured on first use: level 1 again at lc + [`SLOPE_STEP`].
     fn measured(&mut self, k: Constants) -> Option<Sensitivity> {
         if self.measured.is_none() {
-            let lc = self.base.lc;
+            let lc = self.lc;
             let e = StickEdge::from_logit(lc);
             let sizes = Sizes::at(FIRST_LEVEL, e.c, e.one_minus_c);
+            let base = self.base(k)?.fixed.clone();
             let shifted = sigma_at(k, lc + SLOPE_STEP, sizes)?.fixed;
-            let slope = (shifted.sigma - self.base.fixed.sigma) / SLOPE_STEP;
+            let slope = (shifted.sigma - base.sigma) / SLOPE_STEP;
             if slope == 0.0 || !slope.is_finite() {
                 return None;
             }
-            let (mp, mq) = distance(&shifted, &self.base.fixed, &self.rules);
+            let (mp, mq) = distance(&shifted, &base, &self.rules);
             self.measured = Some(Sensitivity {
                 slope,
                 rate: (mp / SLOPE_STEP, mq / SLOPE_STEP),
@@ -353,12 +367,15 @@ impl First {
     }
 }
 
-/// The tractions at the starting lc, whose c is within `bound` of the exact one: one solve per
-/// level at lc until two levels' tractions agree within `traction_tol`, less what the
-/// uncertainty of c moves them ([`SAFETY`] times the move per lc times the uncertainty in lc).
-/// Each level also checks the edge: the root its sigma points to, sigma / slope away, must lie
-/// within the bound plus [`SAFETY`] times the two levels' difference, else None; None at once
-/// where the move alone exceeds `traction_tol`. c keeps its bound as its estimate.
+/// The tractions at the starting lc, whose c is within `bound` of the exact one: half levels
+/// from [`first_half_level`] on, each one assembly and one factorisation at lc that solve both
+/// the level and its coarser columns ([`system::solve_fixed_pair`]), until the level's
+/// tractions agree with the coarser ones, or with the level below where that is nearer,
+/// within `traction_tol`, less what the uncertainty of c moves them ([`SAFETY`] times the move
+/// per lc times the uncertainty in lc). Each level also checks the edge: the root its sigma
+/// points to, sigma / slope away, must lie within the bound plus [`SAFETY`] times the
+/// difference from the coarser sigma, else None; None at once where the move alone exceeds
+/// `traction_tol`. c keeps its bound as its estimate.
 ///
 /// The slope and the move per lc are the bounds [`SLOPE_FLOOR`] and [`RATE_BOUND`] (a smaller
 /// slope and a larger move only make both tests stricter) until a test fails with them; then
@@ -370,7 +387,7 @@ fn at_fixed_edge(
     traction_tol: f64,
     delta: f64,
 ) -> Option<Spectral> {
-    let lc = first.base.lc;
+    let lc = first.lc;
     let edge = StickEdge::from_logit(lc);
     let (c, w) = (edge.c, edge.one_minus_c);
     let uncertainty = bound / (c * w);
@@ -387,9 +404,33 @@ fn at_fixed_edge(
             return None;
         }
     }
-    let mut prev = first.base.fixed.clone();
-    for level in FIRST_LEVEL + 1..=MAX_LEVEL {
-        let cur = sigma_at(k, lc, Sizes::at(level, c, w))?.fixed;
+    let mut below: Option<Fixed> = None;
+    for half in first_half_level(traction_tol)..=2 * MAX_LEVEL {
+        let sizes = Sizes::at_real(0.5 * half as f64, c, w);
+        // each level with its coarser columns on the same rows (one assembly and one
+        // factorisation for both); the estimate is the distance to the nearer of those and
+        // the level below
+        let (coarse, cur) = solve_fixed_pair(k, c, w, sizes).ok()?;
+        if !cur.sigma.is_finite() {
+            return None;
+        }
+        if half == 2 * FIRST_LEVEL && first.base.is_none() {
+            first.base = Some(Level {
+                lc,
+                fixed: cur.clone(),
+            });
+        }
+        let mut prev = coarse;
+        let (mut dp, mut dq) = distance(&cur, &prev, &first.rules);
+        if let Some(b) = below.take() {
+            let (bp, bq) = distance(&cur, &b, &first.rules);
+            if bp + delta * bq < dp + delta * dq {
+                (dp, dq, prev) = (bp, bq, b);
+            }
+        }
+        if !cur.sigma.is_finite() {
+            return None;
+        }
         let off_edge = |s: Option<Sensitivity>| {
             let slope = s.map_or(SLOPE_FLOOR * k.b, |s| s.slope.abs());
             (cur.sigma / slope).abs()
@@ -401,7 +442,6 @@ fn at_fixed_edge(
             }
             shift = moved(first.measured);
         }
-        let (dp, dq) = distance(&cur, &prev, &first.rules);
         let parts = (SAFETY * dp + shift.0, SAFETY * dq + shift.1);
         if parts.0 + delta * parts.1 <= traction_tol && cur.residual <= traction_tol {
             match verdict(&cur, k.mu, traction_tol, delta, parts) {
@@ -411,16 +451,31 @@ fn at_fixed_edge(
                         error: bound,
                         traction_parts: parts,
                         fixed: cur,
-                        level,
+                        level: half.div_ceil(2),
                     });
                 }
                 Verdict::Inadmissible => return None,
                 Verdict::Noisy => {}
             }
         }
-        prev = cur;
+        below = Some(cur);
     }
     None
+}
+
+/// The first half level (level times 2) of [`at_fixed_edge`] at the traction tolerance: level
+/// 1.5 at 1e-8, half a level more per two decades below (level 2 at 1e-10) and less above,
+/// level 1 at the least. Measured on the 10 spectral scenes of `examples/spectral_timing.rs`
+/// with the half-level ladder, the sum of n^3 over the levels solved (n unknowns; the QR's
+/// cost, and the assembly's grows like n^2) for the first level:
+///
+/// | traction tolerance | from level 1 | 1.5 | 2 | 2.5 |
+/// |---|---|---|---|---|
+/// | 1e-8 | 2292k (3 answers at level 1, 7 at 1.5) | 2145k (8 at 1.5, 2 at 2) | | |
+/// | 1e-10 | | | 3842k (6 at 2, 3 at 2.5, 1 at 3) | 4691k (7 at 2.5, 3 at 3) |
+fn first_half_level(traction_tol: f64) -> usize {
+    let decades = (1e-8 / traction_tol).log10();
+    (3.0 + (0.5 * decades).round()).clamp(2.0 * FIRST_LEVEL as f64, 2.0 * MAX_LEVEL as f64) as usize
 }
 
 /// The root search as a ladder of levels with one solve each: level L is solved at lc_L, its
@@ -440,10 +495,11 @@ fn newton_ladder(
     delta: f64,
 ) -> Option<Spectral> {
     let Sensitivity { slope, rate } = first.measured?;
-    let mut lc = first.base.lc;
-    let mut prev_step = -first.base.fixed.sigma / slope;
+    let base = first.base.as_ref()?;
+    let mut lc = base.lc;
+    let mut prev_step = -base.fixed.sigma / slope;
     let mut prev_root = lc + prev_step;
-    let mut prev = first.base.fixed.clone();
+    let mut prev = base.fixed.clone();
     let mut stalled = 0;
     // a thin slip zone's answer, held until the next level's root confirms it
     let mut candidate: Option<(Spectral, f64)> = None;

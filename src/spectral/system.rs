@@ -14,7 +14,7 @@
 
 use crate::error::{Error, Result};
 use crate::numerics::jacobi_transform::{JacobiFamily, Point};
-use crate::numerics::lstsq::{ConstrainedFailure, constrained};
+use crate::numerics::lstsq::{ConstrainedFailure, constrained, constrained_nested};
 
 use crate::numerics::bonded::{Bonded, MAX_DEGREE};
 use faer::complex::Complex;
@@ -55,16 +55,24 @@ impl Sizes {
     /// mu~ = 1, 1 - c = 2.1e-3, 1 + level / 2 per decade needed level 9 for tractions to
     /// 1e-10, 2 + level / 2 level 7, with 15% fewer unknowns).
     pub(crate) fn at(level: usize, c: f64, w: f64) -> Self {
-        let l = level as f64;
+        Self::at_real(level as f64, c, w)
+    }
+
+    /// [`Sizes::at`] for a fractional level l (the half levels of the known edge's ladder):
+    /// the same rules, each count rounded to the nearest integer.
+    pub(crate) fn at_real(l: f64, c: f64, w: f64) -> Self {
         let per_decade = 2.0 + 0.5 * l;
         let decades = |[near, far]: [f64; 2]| (far / near).log10().max(0.0);
         let [stick, slip] = pole_ranges(c, w);
         let bonded = w < BONDED_BELOW;
         let (stick_decades, slip_decades) = (decades(stick), decades(slip));
         Sizes {
-            legendre: 3 + 2 * level,
-            stick_g: 2 + 2 * level,
-            slip: [5 + 3 * level, 3 + 2 * level],
+            legendre: (3.0 + 2.0 * l).round() as usize,
+            stick_g: (2.0 + 2.0 * l).round() as usize,
+            slip: [
+                (5.0 + 3.0 * l).round() as usize,
+                (3.0 + 2.0 * l).round() as usize,
+            ],
             poles: [
                 (stick_decades
                     * if bonded {
@@ -208,6 +216,36 @@ impl Basis {
             bonded,
             scratch,
         }
+    }
+
+    /// The columns of the coarser system of [`solve_fixed_pair`]: each block less its
+    /// highest polynomial degree and one pole (its second nearest), the bonded columns kept.
+    ///
+    /// The coarser solution's distance from the finer one is the finer one's error estimate
+    /// (twice it, [`super::SAFETY`]). Measured against level 8 (c from the table, 8 scenes
+    /// b* = 0.25 .. 0.9, mu~ = 0.2 .. 8, c = 0.007 .. 1 - 4e-6), the ratio of that estimate
+    /// to the finer solution's true traction error at levels 1 and 2 was, for the pole
+    /// dropped:
+    ///
+    /// | pole dropped | smallest ratio | largest | level-1 estimates <= 1e-8 |
+    /// |---|---|---|---|
+    /// | second nearest (this rule) | 2.7 | 1.2e3 | 6 of 8 |
+    /// | nearest | 3.9 | 6.1e3 | 4 of 8 |
+    /// | farthest | 1.3 | 1.3e3 | 7 of 8 |
+    ///
+    /// The farthest pole is nearly resolved by the polynomials, so dropping it hides the
+    /// pole part of the error (ratios down to 1.3, at the noise floor of a thin slip zone);
+    /// dropping two degrees per family instead of one made the level-1 estimates 10-100
+    /// times larger (2 of 8 within 1e-8).
+    pub(crate) fn coarse_columns(&self) -> Vec<bool> {
+        let mut keep: Vec<bool> = self
+            .stick
+            .iter()
+            .chain(&self.slip)
+            .flat_map(|b| b.coarse_columns(1, 1))
+            .collect();
+        keep.extend(std::iter::repeat_n(true, self.bonded_len()));
+        keep
     }
 
     /// Number of coefficients (without sigma).
@@ -402,85 +440,184 @@ pub(crate) struct Fixed {
 
 /// Solves the fixed-c system at `sizes` (module documentation).
 pub(crate) fn solve_fixed(k: Constants, c: f64, w: f64, sizes: Sizes) -> Result<Fixed> {
-    let basis = Basis::new(k, c, w, sizes);
-    let n = basis.len();
-    let cols = n + 1;
-    let (stick, slip) = collocation(
-        c,
-        w,
-        (STICK_POINTS * cols as f64).ceil() as usize,
-        (SLIP_POINTS * cols as f64).ceil() as usize,
-    );
-    let rows = 2 * stick.len() + slip.len();
-    let mut a = vec![0.0; rows * cols];
-    let (mut pv, mut qv, mut hp, mut hq) = (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]);
-    let mut scratch = vec![0.0; basis.scratch_len()];
-    let mut r = 0;
-    // each point's p columns, for (R1) after the solve
-    let mut p_rows = Vec::with_capacity((stick.len() + slip.len()) * n);
-    let mut weights = Vec::with_capacity(stick.len() + slip.len());
-    for (pt, on_stick) in stick
-        .iter()
-        .map(|p| (p, true))
-        .chain(slip.iter().map(|p| (p, false)))
-    {
-        basis.tractions_row(pt, &mut pv, &mut qv, &mut scratch);
-        basis.hilbert_row(pt, &mut hp, &mut hq, &mut scratch);
-        p_rows.extend_from_slice(&pv);
-        let weight = pt.omx.powf(k.g);
-        weights.push(weight);
-        let row = &mut a[r * cols..(r + 1) * cols];
-        for j in 0..n {
-            row[j] = weight * (hp[j] - k.b * qv[j]);
-        }
-        r += 1;
-        if on_stick {
+    Assembled::new(k, c, w, sizes).solve()
+}
+
+/// The fixed-c system at `sizes` and, from the same rows and the same factorisation, the
+/// system of a subset of its columns ([`Basis::coarse_columns`]): the coarser solution and
+/// the finer one, whose distance estimates the finer one's error.
+pub(crate) fn solve_fixed_pair(
+    k: Constants,
+    c: f64,
+    w: f64,
+    sizes: Sizes,
+) -> Result<(Fixed, Fixed)> {
+    Assembled::new(k, c, w, sizes).solve_pair()
+}
+
+/// The weighted collocation rows of the fixed-c system with their column scales, and the
+/// three constraints in the scaled columns.
+struct Assembled {
+    basis: Basis,
+    /// Row-major, `basis.len() + 1` columns (the last one sigma's), scaled.
+    a: Vec<f64>,
+    rows: usize,
+    scale: Vec<f64>,
+    cons: Vec<(Vec<f64>, f64)>,
+    /// Each point's p columns and row weight, and whether it is a stick point (two rows).
+    p_rows: Vec<f64>,
+    weights: Vec<f64>,
+    on_stick: Vec<bool>,
+}
+
+impl Assembled {
+    fn new(k: Constants, c: f64, w: f64, sizes: Sizes) -> Self {
+        let basis = Basis::new(k, c, w, sizes);
+        let n = basis.len();
+        let cols = n + 1;
+        let (stick, slip) = collocation(
+            c,
+            w,
+            (STICK_POINTS * cols as f64).ceil() as usize,
+            (SLIP_POINTS * cols as f64).ceil() as usize,
+        );
+        let rows = 2 * stick.len() + slip.len();
+        let mut a = vec![0.0; rows * cols];
+        let (mut pv, mut qv, mut hp, mut hq) =
+            (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+        let mut scratch = vec![0.0; basis.scratch_len()];
+        let mut r = 0;
+        let points = stick.len() + slip.len();
+        let mut p_rows = Vec::with_capacity(points * n);
+        let mut weights = Vec::with_capacity(points);
+        let mut on_stick = Vec::with_capacity(points);
+        for (pt, stick_point) in stick
+            .iter()
+            .map(|p| (p, true))
+            .chain(slip.iter().map(|p| (p, false)))
+        {
+            basis.tractions_row(pt, &mut pv, &mut qv, &mut scratch);
+            basis.hilbert_row(pt, &mut hp, &mut hq, &mut scratch);
+            p_rows.extend_from_slice(&pv);
+            let weight = pt.omx.powf(k.g);
+            weights.push(weight);
+            on_stick.push(stick_point);
             let row = &mut a[r * cols..(r + 1) * cols];
             for j in 0..n {
-                row[j] = weight * (hq[j] + k.b * pv[j]);
+                row[j] = weight * (hp[j] - k.b * qv[j]);
             }
-            row[n] = -weight;
             r += 1;
+            if stick_point {
+                let row = &mut a[r * cols..(r + 1) * cols];
+                for j in 0..n {
+                    row[j] = weight * (hq[j] + k.b * pv[j]);
+                }
+                row[n] = -weight;
+                r += 1;
+            }
+        }
+        // column scales
+        let mut scale = vec![0.0; cols];
+        for row in a.chunks_exact(cols) {
+            for (s, v) in scale.iter_mut().zip(row) {
+                *s += v * v;
+            }
+        }
+        for s in &mut scale {
+            *s = if *s > 0.0 { 1.0 / s.sqrt() } else { 1.0 };
+        }
+        for row in a.chunks_exact_mut(cols) {
+            for (v, s) in row.iter_mut().zip(&scale) {
+                *v *= s;
+            }
+        }
+        // the constraints, in the scaled columns: int p = 1 (S3), and p and q continuous at
+        // x = c (C2)
+        let (mut ps, mut qs, mut pc, mut qc) =
+            (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+        let at_c = |xmc| Pt { x: c, omx: w, xmc };
+        basis.tractions_row(&at_c(-0.0), &mut ps, &mut qs, &mut scratch);
+        basis.tractions_row(&at_c(0.0), &mut pc, &mut qc, &mut scratch);
+        let integral = basis.integrals();
+        let cons: Vec<(Vec<f64>, f64)> = [
+            (integral, 1.0),
+            ((0..n).map(|j| ps[j] - pc[j]).collect(), 0.0),
+            ((0..n).map(|j| qs[j] - qc[j]).collect(), 0.0),
+        ]
+        .into_iter()
+        .map(|(row, d)| {
+            let mut row: Vec<f64> = row.iter().zip(&scale).map(|(v, s)| v * s).collect();
+            row.push(0.0);
+            (row, d)
+        })
+        .collect();
+        Assembled {
+            basis,
+            a,
+            rows,
+            scale,
+            cons,
+            p_rows,
+            weights,
+            on_stick,
         }
     }
-    // column scales
-    let mut scale = vec![0.0; cols];
-    for i in 0..rows {
-        for j in 0..cols {
-            scale[j] += a[i * cols + j] * a[i * cols + j];
-        }
+
+    /// The least-squares solution on all columns. The frame is ill-conditioned (near-dependent
+    /// columns by design: cond 1e15 and more); Householder QR without pivoting spreads their
+    /// rounding over every coefficient (the mid-range scenes of the tests lost c at 1e-8 that
+    /// way), so the pivoted QR at once, here and in [`Assembled::solve_pair`].
+    fn solve(&self) -> Result<Fixed> {
+        let cols = self.basis.len() + 1;
+        let x = constrained(
+            &self.a,
+            cols,
+            &vec![0.0; self.rows],
+            self.cons.clone(),
+            cols - 1,
+        )
+        .map_err(|e| self.failure(e))?;
+        Ok(self.fixed(x))
     }
-    for s in &mut scale {
-        *s = if *s > 0.0 { 1.0 / s.sqrt() } else { 1.0 };
+
+    /// The solutions on the coarser columns ([`Basis::coarse_columns`]) and on all, from one
+    /// factorisation (coarser, finer).
+    fn solve_pair(&self) -> Result<(Fixed, Fixed)> {
+        let n = self.basis.len();
+        let cols = n + 1;
+        let keep = self.basis.coarse_columns();
+        // the coarser columns first (sigma among them), then the rest
+        let order: Vec<usize> = (0..n)
+            .filter(|&j| keep[j])
+            .chain([n])
+            .chain((0..n).filter(|&j| !keep[j]))
+            .collect();
+        let inner = keep.iter().filter(|&&k| k).count() + 1;
+        let a: Vec<f64> = self
+            .a
+            .chunks_exact(cols)
+            .flat_map(|row| order.iter().map(move |&j| row[j]))
+            .collect();
+        let cons = self
+            .cons
+            .iter()
+            .map(|(row, d)| (order.iter().map(|&j| row[j]).collect(), *d))
+            .collect();
+        // the constraints' pivots among the coarser coefficients
+        let (xi, xf) = constrained_nested(&a, cols, &vec![0.0; self.rows], cons, inner - 1, inner)
+            .map_err(|e| self.failure(e))?;
+        let back = |x: Vec<f64>| {
+            let mut out = vec![0.0; cols];
+            for (&j, v) in order.iter().zip(x) {
+                out[j] = v;
+            }
+            out
+        };
+        Ok((self.fixed(back(xi)), self.fixed(back(xf))))
     }
-    for i in 0..rows {
-        for j in 0..cols {
-            a[i * cols + j] *= scale[j];
-        }
-    }
-    // the constraints, in the scaled columns: int p = 1 (S3), and p and q continuous at
-    // x = c (C2)
-    let (mut ps, mut qs, mut pc, mut qc) = (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]);
-    let at_c = |xmc| Pt { x: c, omx: w, xmc };
-    basis.tractions_row(&at_c(-0.0), &mut ps, &mut qs, &mut scratch);
-    basis.tractions_row(&at_c(0.0), &mut pc, &mut qc, &mut scratch);
-    let integral = basis.integrals();
-    let cons: Vec<(Vec<f64>, f64)> = [
-        (integral, 1.0),
-        ((0..n).map(|j| ps[j] - pc[j]).collect(), 0.0),
-        ((0..n).map(|j| qs[j] - qc[j]).collect(), 0.0),
-    ]
-    .into_iter()
-    .map(|(row, d)| {
-        let mut row: Vec<f64> = row.iter().zip(&scale).map(|(v, s)| v * s).collect();
-        row.push(0.0);
-        (row, d)
-    })
-    .collect();
-    // the frame is ill-conditioned (near-dependent columns by design: cond 1e15 and more);
-    // Householder QR without pivoting spreads their rounding over every coefficient (the
-    // mid-range scenes of the tests lost c at 1e-8 that way), so the pivoted QR at once
-    let full = constrained(&a, cols, &vec![0.0; rows], cons, n).map_err(|e| {
+
+    fn failure(&self, e: ConstrainedFailure) -> Error {
+        let c = self.basis.c;
         Error::NoConvergence(match e {
             ConstrainedFailure::DependentConstraints => {
                 format!("spectral: dependent constraints at c = {c}")
@@ -489,40 +626,43 @@ pub(crate) fn solve_fixed(k: Constants, c: f64, w: f64, sizes: Sizes) -> Result<
                 format!("spectral: least-squares solution not finite at c = {c}")
             }
         })
-    })?;
-    let coef: Vec<f64> = (0..n).map(|j| full[j] * scale[j]).collect();
-    let sigma = full[n] * scale[n];
-    let mut fixed = Fixed {
-        basis,
-        coef,
-        sigma,
-        residual: 0.0,
-    };
-    // (R1): each row's residual relative to the smallest term of its equation, b mu p in
-    // (E1) (|q| <= mu p) and b p in (E2), in the rows' weights
-    let mut r = 0;
-    for (i, on_stick) in stick
-        .iter()
-        .map(|_| true)
-        .chain(slip.iter().map(|_| false))
-        .enumerate()
-    {
-        let p: f64 = p_rows[i * n..(i + 1) * n]
-            .iter()
-            .zip(&fixed.coef)
-            .map(|(a, b)| a * b)
-            .sum();
-        let size = k.b * p * weights[i];
-        for (eq, scale) in [(true, k.mu), (on_stick, 1.0)] {
-            if eq {
-                let row = &a[r * cols..(r + 1) * cols];
-                let res: f64 = row.iter().zip(&full).map(|(a, x)| a * x).sum();
-                fixed.residual = fixed.residual.max(res.abs() / (scale * size));
-                r += 1;
+    }
+
+    /// The solution from the scaled coefficients `full` (sigma last), with its residual (R1).
+    fn fixed(&self, full: Vec<f64>) -> Fixed {
+        let basis = &self.basis;
+        let k = basis.k;
+        let n = basis.len();
+        let cols = n + 1;
+        let coef: Vec<f64> = (0..n).map(|j| full[j] * self.scale[j]).collect();
+        let sigma = full[n] * self.scale[n];
+        // (R1): each row's residual relative to the smallest term of its equation, b mu p in
+        // (E1) (|q| <= mu p) and b p in (E2), in the rows' weights
+        let mut residual: f64 = 0.0;
+        let mut r = 0;
+        for (i, &stick_point) in self.on_stick.iter().enumerate() {
+            let p: f64 = self.p_rows[i * n..(i + 1) * n]
+                .iter()
+                .zip(&coef)
+                .map(|(a, b)| a * b)
+                .sum();
+            let size = k.b * p * self.weights[i];
+            for (eq, scale) in [(true, k.mu), (stick_point, 1.0)] {
+                if eq {
+                    let row = &self.a[r * cols..(r + 1) * cols];
+                    let res: f64 = row.iter().zip(&full).map(|(a, x)| a * x).sum();
+                    residual = residual.max(res.abs() / (scale * size));
+                    r += 1;
+                }
             }
         }
+        Fixed {
+            basis: basis.clone(),
+            coef,
+            sigma,
+            residual,
+        }
     }
-    Ok(fixed)
 }
 
 impl Fixed {

@@ -208,7 +208,8 @@ fn sensitivity_bounds_hold() {
         let e = StickEdge::from_logit(lc);
         let base = sigma_at(k, lc, Sizes::at(FIRST_LEVEL, e.c, e.one_minus_c)).expect("level 1");
         let mut first = First {
-            base,
+            lc,
+            base: Some(base),
             rules: Rules::new(k.g),
             measured: None,
         };
