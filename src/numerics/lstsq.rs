@@ -225,7 +225,7 @@ pub(crate) fn nested_qr_solve(a: &[f64], n: usize, b: &[f64], inner: usize) -> [
     }
     let mut rhs = b.to_vec();
     let mut perm: Vec<usize> = (0..n).collect();
-    let norm = |v: &[f64]| v.iter().map(|x| x * x).sum::<f64>().sqrt();
+    let norm = |v: &[f64]| dot(v, v).sqrt();
     let mut vn1: Vec<f64> = q.chunks_exact(m).map(norm).collect();
     let mut vn2 = vn1.clone();
     let tol = f64::EPSILON.sqrt();
@@ -254,7 +254,7 @@ pub(crate) fn nested_qr_solve(a: &[f64], n: usize, b: &[f64], inner: usize) -> [
         v[0] = 1.0;
         let v = &*v;
         let apply = |col: &mut [f64]| {
-            let d = tau * v.iter().zip(col.iter()).map(|(a, b)| a * b).sum::<f64>();
+            let d = tau * dot(v, col);
             col.iter_mut().zip(v).for_each(|(c, a)| *c -= d * a);
         };
         for col in tail.chunks_exact_mut(m) {
@@ -291,6 +291,22 @@ pub(crate) fn nested_qr_solve(a: &[f64], n: usize, b: &[f64], inner: usize) -> [
         out
     };
     [unpermute(solve(inner), inner), unpermute(solve(n), n)]
+}
+
+/// sum a_i b_i in eight independent partial sums, which the compiler keeps in vector
+/// registers (a single running sum is a chain it may not reorder): [`nested_qr_solve`]'s
+/// Householder steps are these dot products and their updates.
+fn dot(a: &[f64], b: &[f64]) -> f64 {
+    let mut acc = [0.0; 8];
+    let (ca, cb) = (a.chunks_exact(8), b.chunks_exact(8));
+    let (ra, rb) = (ca.remainder(), cb.remainder());
+    for (x, y) in ca.zip(cb) {
+        for k in 0..8 {
+            acc[k] += x[k] * y[k];
+        }
+    }
+    let tail: f64 = ra.iter().zip(rb).map(|(x, y)| x * y).sum();
+    (acc[0] + acc[4]) + (acc[1] + acc[5]) + ((acc[2] + acc[6]) + (acc[3] + acc[7])) + tail
 }
 
 #[cfg(test)]

@@ -635,7 +635,7 @@ fn distance(a: &Fixed, b: &Fixed, rules: &Rules) -> (f64, f64) {
     for (&t, &wt) in t.iter().zip(wt) {
         // tau in (0, 1): the half of the stick zone
         let x = 0.5 * c * (1.0 + t);
-        let ((pa, qa), (pb, qb)) = (a.at(x), b.at(x));
+        let ((pa, qa), (pb, qb)) = a.at_both(b, x);
         dp += 0.5 * c * wt * (pa - pb).abs();
         dq += 0.5 * c * wt * (qa - qb).abs();
     }
@@ -643,7 +643,7 @@ fn distance(a: &Fixed, b: &Fixed, rules: &Rules) -> (f64, f64) {
     for (&s, &ws) in s.iter().zip(ws) {
         let x = c + 0.5 * w * (1.0 + s);
         let weight = (1.0 - s).powf(-g);
-        let ((pa, qa), (pb, qb)) = (a.at(x), b.at(x));
+        let ((pa, qa), (pb, qb)) = a.at_both(b, x);
         dp += 0.5 * w * ws * (pa - pb).abs() / weight;
         dq += 0.5 * w * ws * (qa - qb).abs() / weight;
     }
@@ -701,7 +701,7 @@ fn graded_distance(a: &Fixed, b: &Fixed) -> (f64, f64) {
                     xmc: w - d,
                 },
             };
-            let ((pa, qa), (pb, qb)) = (a.eval(&pt), b.eval(&pt));
+            let ((pa, qa), (pb, qb)) = a.eval_both(b, &pt);
             sp += ww * 0.5 * (hi - lo) * (pa - pb).abs();
             sq += ww * 0.5 * (hi - lo) * (qa - qb).abs();
         }

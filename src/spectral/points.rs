@@ -12,6 +12,16 @@ pub(crate) struct Pt {
 }
 
 impl Pt {
+    /// The point 0 <= x < 1 for the stick edge c, on the stick side at x = c.
+    pub(crate) fn at(x: f64, c: f64) -> Self {
+        let xmc = x - c;
+        Pt {
+            x,
+            omx: 1.0 - x,
+            xmc: if xmc == 0.0 { -0.0 } else { xmc },
+        }
+    }
+
     /// Whether the point lies on the stick zone: x < c, or x = c from the stick side (xmc = -0.0,
     /// where the edge factors (c - x)^g vanish as they do in the limit; at
     /// xmc = -f64::MIN_POSITIVE they were (2e-308)^g, 1e-9 at g = 0.03 and 1e-3 at g = 0.01,

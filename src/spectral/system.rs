@@ -18,6 +18,7 @@ use crate::numerics::lstsq::{ConstrainedFailure, constrained, constrained_nested
 
 use crate::numerics::bonded::{Bonded, MAX_DEGREE};
 use faer::complex::Complex;
+use std::sync::Arc;
 
 use super::basis::{Block, Family, parity};
 use crate::numerics::quotient::QuotientFamily;
@@ -428,7 +429,8 @@ const SLIP_POINTS: f64 = 1.0;
 /// The solution of the fixed-c system.
 #[derive(Clone, Debug)]
 pub(crate) struct Fixed {
-    pub(crate) basis: Basis,
+    /// Shared by the solutions of one assembly ([`solve_fixed_pair`]).
+    pub(crate) basis: Arc<Basis>,
     /// The coefficients of the basis columns.
     pub(crate) coef: Vec<f64>,
     /// The border constant of (E2) (zero at the exact c).
@@ -458,7 +460,7 @@ pub(crate) fn solve_fixed_pair(
 /// The weighted collocation rows of the fixed-c system with their column scales, and the
 /// three constraints in the scaled columns.
 struct Assembled {
-    basis: Basis,
+    basis: Arc<Basis>,
     /// Row-major, `basis.len() + 1` columns (the last one sigma's), scaled.
     a: Vec<f64>,
     rows: usize,
@@ -552,7 +554,7 @@ impl Assembled {
         })
         .collect();
         Assembled {
-            basis,
+            basis: Arc::new(basis),
             a,
             rows,
             scale,
@@ -657,7 +659,7 @@ impl Assembled {
             }
         }
         Fixed {
-            basis: basis.clone(),
+            basis: Arc::clone(&self.basis),
             coef,
             sigma,
             residual,
@@ -677,6 +679,41 @@ impl Fixed {
     /// (|q| <= mu p there; on the slip zone q = mu p is exact), the larger of the two. The
     /// frame's columns are near-dependent, so its coefficients can be large and cancel
     /// (docs/theory_spectral.md (R2)).
+    /// [`Fixed::at`] of this solution and of `other` at x, each on the stick side of its own
+    /// stick edge: the columns evaluated once where both come from one assembly
+    /// ([`solve_fixed_pair`]).
+    pub(crate) fn at_both(&self, other: &Fixed, x: f64) -> ((f64, f64), (f64, f64)) {
+        if Arc::ptr_eq(&self.basis, &other.basis) {
+            self.eval_both(other, &Pt::at(x, self.basis.c))
+        } else {
+            (self.at(x), other.at(x))
+        }
+    }
+
+    /// (p, q) of this solution and of `other` at the point p (its offsets taken for both):
+    /// the columns evaluated once where both come from one assembly ([`solve_fixed_pair`]).
+    pub(crate) fn eval_both(&self, other: &Fixed, p: &Pt) -> ((f64, f64), (f64, f64)) {
+        if !Arc::ptr_eq(&self.basis, &other.basis) {
+            return (self.eval(p), other.eval(p));
+        }
+        let n = self.coef.len();
+        let mut work = vec![0.0; 2 * n + self.basis.scratch_len()];
+        let (pv, rest) = work.split_at_mut(n);
+        let (qv, buf) = rest.split_at_mut(n);
+        self.basis.tractions_row(p, pv, qv, buf);
+        let mu = self.basis.k.mu;
+        let at = |coef: &[f64]| {
+            let value: f64 = pv.iter().zip(coef).map(|(v, a)| v * a).sum();
+            let q = if p.on_stick() {
+                qv.iter().zip(coef).map(|(v, a)| v * a).sum()
+            } else {
+                mu * value
+            };
+            (value, q)
+        };
+        (at(&self.coef), at(&other.coef))
+    }
+
     pub(crate) fn eval_with_noise(&self, p: &Pt) -> (f64, f64, f64) {
         let n = self.coef.len();
         let mut work = vec![0.0; 2 * n + self.basis.scratch_len()];
@@ -703,13 +740,7 @@ impl Fixed {
 
     /// (p, q) at 0 <= x < 1 (the stick side at x = c).
     pub(crate) fn at(&self, x: f64) -> (f64, f64) {
-        let xmc = x - self.basis.c;
-        let xmc = if xmc == 0.0 { -0.0 } else { xmc };
-        self.eval(&Pt {
-            x,
-            omx: 1.0 - x,
-            xmc,
-        })
+        self.eval(&Pt::at(x, self.basis.c))
     }
 
     /// The residuals of (E1) and (E2) (0 on the slip zone) at 0 <= x < 1, x != c, with
