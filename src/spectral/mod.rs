@@ -428,9 +428,6 @@ fn at_fixed_edge(
                 (dp, dq, prev) = (bp, bq, b);
             }
         }
-        if !cur.sigma.is_finite() {
-            return None;
-        }
         let off_edge = |s: Option<Sensitivity>| {
             let slope = s.map_or(SLOPE_FLOOR * k.b, |s| s.slope.abs());
             (cur.sigma / slope).abs()
