@@ -427,9 +427,8 @@ pub(crate) struct Monotonic {
     /// Levels used and fixed-geometry solves in all.
     pub(crate) levels: usize,
     pub(crate) solves: usize,
-    /// Per level after the first: (level, w1, c2, |dc| + steps, traction distance to the
-    /// level before, solves).
-    pub(crate) trace: Vec<(usize, f64, f64, f64, f64, usize)>,
+    /// Per level after the first, the unknowns (w1, c2) ([`Trace`]).
+    pub(crate) trace: Trace,
 }
 
 /// Panels per half-width of the grid LCP that gives the start of c2 (cost about a
@@ -448,6 +447,96 @@ pub(crate) const MAX_LEVEL: usize = 8;
 /// Factor on the distance between two levels in the estimates (as the normal-load solver's,
 /// docs/theory_spectral.md (S6)).
 pub(crate) const SAFETY: f64 = 2.0;
+
+/// One level of a ladder ([`ladder`]): the two unknowns its border constants fix, its last
+/// Newton step's size in them (its own error bound), its state and its fixed-geometry solves.
+pub(crate) trait Rung {
+    fn unknowns(&self) -> (f64, f64);
+    fn step(&self) -> f64;
+    fn state(&self) -> &Solved;
+    fn solves(&self) -> usize;
+}
+
+impl Rung for Level {
+    fn unknowns(&self) -> (f64, f64) {
+        (self.w1(), self.c2)
+    }
+    fn step(&self) -> f64 {
+        self.step
+    }
+    fn state(&self) -> &Solved {
+        &self.state
+    }
+    fn solves(&self) -> usize {
+        self.solves
+    }
+}
+
+/// Per level after the first: (level, the two unknowns, their change from the level before
+/// plus both levels' steps, the traction distance (T1) to it, the level's solves).
+pub(crate) type Trace = Vec<(usize, f64, f64, f64, f64, usize)>;
+
+/// The level a ladder stopped at, with its estimates.
+pub(crate) struct Climbed<L> {
+    pub(crate) level: L,
+    /// [`SAFETY`] times the unknowns' change plus both steps, and times the traction distance.
+    pub(crate) c_error: f64,
+    pub(crate) traction_error: f64,
+    pub(crate) levels: usize,
+    /// Solves in all, `solves` given to [`ladder`] included.
+    pub(crate) solves: usize,
+    pub(crate) trace: Trace,
+}
+
+/// The ladder of levels `first`, `first` + 1, ... up to [`MAX_LEVEL`], each
+/// `solve(level, the level before)`, until two levels agree within `tol` (the unknowns) and
+/// `traction_tol` (the tractions); Ok(Err(trace)) where none do, Err where a level fails.
+/// The loading's and the unloading's solvers climb it.
+pub(crate) fn ladder<L: Rung>(
+    g: f64,
+    first: usize,
+    tol: f64,
+    traction_tol: f64,
+    mut solves: usize,
+    mut solve: impl FnMut(usize, Option<&L>) -> Result<L>,
+) -> Result<std::result::Result<Climbed<L>, Trace>> {
+    let mut trace = Vec::new();
+    let mut prev: Option<L> = None;
+    for level in first..=MAX_LEVEL {
+        let l = solve(level, prev.as_ref())?;
+        solves += l.solves();
+        if let Some(p) = &prev {
+            let ((a0, a1), (b0, b1)) = (l.unknowns(), p.unknowns());
+            let dc = (a1 - b1).abs() + (a0 - b0).abs() + l.step() + p.step();
+            let dt = distance(g, l.state(), p.state());
+            let (c_error, traction_error) = (SAFETY * dc, SAFETY * dt);
+            trace.push((level, a0, a1, dc, dt, l.solves()));
+            if c_error <= tol && traction_error <= traction_tol {
+                return Ok(Ok(Climbed {
+                    level: l,
+                    c_error,
+                    traction_error,
+                    levels: level,
+                    solves,
+                    trace,
+                }));
+            }
+        }
+        prev = Some(l);
+    }
+    Ok(Err(trace))
+}
+
+/// int x p dx of a state, the moment the guided punch carries (per P a).
+pub(crate) fn moment(g: f64, s: &Solved) -> f64 {
+    contact_rule(g, s, s)
+        .into_iter()
+        .map(|(opx, omx, w)| {
+            let x = if opx < omx { opx - 1.0 } else { 1.0 - omx };
+            w * x * s.tractions(opx, omx).0
+        })
+        .sum()
+}
 
 /// The monotonic end state at Q/P = qp (0 < qp < mu), c1, c2 to `tol` and the tractions to
 /// `traction_tol` in the norm (T1), by the ladder of levels 1, 2, ... until two levels agree.
@@ -541,43 +630,41 @@ pub(crate) fn monotonic(k: &Coupling, qp: f64, tol: f64, traction_tol: f64) -> R
         Edge::Zone { w1, sign: -1.0 }
     };
     let mut jac = None;
-    let mut trace = Vec::new();
-    let mut prev: Option<Level> = None;
-    let (mut edge, mut c2) = (edge0, c2_start);
-    for level in 1..=MAX_LEVEL {
-        let l = monotonic_level(k, &normal, c, w, edge, c2, qp, level, tol, &mut jac)?;
-        solves += l.solves;
-        (edge, c2) = (l.edge, l.c2);
-        if let Some(p) = &prev {
-            let dc = (l.c2 - p.c2).abs() + (l.w1() - p.w1()).abs() + l.step + p.step;
-            let dt = distance(g, &l.state, &p.state);
-            let (c_error, traction_error) = (SAFETY * dc, SAFETY * dt);
-            trace.push((level, l.w1(), l.c2, dc, dt, l.solves));
-            if c_error <= tol && traction_error <= traction_tol {
-                return Ok(Monotonic {
-                    k: *k,
-                    qp,
-                    c,
-                    normal,
-                    level: l,
-                    c_error,
-                    traction_error,
-                    levels: level,
-                    solves,
-                    trace,
-                });
-            }
+    let climbed = ladder(
+        g,
+        1,
+        tol,
+        traction_tol,
+        solves,
+        |level, prev: Option<&Level>| {
+            let (edge, c2) = prev.map_or((edge0, c2_start), |p| (p.edge, p.c2));
+            monotonic_level(k, &normal, c, w, edge, c2, qp, level, tol, &mut jac)
+        },
+    )?;
+    match climbed {
+        Ok(l) => Ok(Monotonic {
+            k: *k,
+            qp,
+            c,
+            normal,
+            level: l.level,
+            c_error: l.c_error,
+            traction_error: l.traction_error,
+            levels: l.levels,
+            solves: l.solves,
+            trace: l.trace,
+        }),
+        Err(trace) => {
+            let last = trace
+                .last()
+                .map_or((f64::NAN, f64::NAN, f64::NAN), |t| (t.2, t.3, t.4));
+            Err(Error::NoConvergence(format!(
+                "exact: levels 1-{MAX_LEVEL} did not agree to {tol:e} (c) and {traction_tol:e} (tractions): \
+                 the last two moved c by {:e} and the tractions by {:e} (c2 = {})",
+                last.1, last.2, last.0
+            )))
         }
-        prev = Some(l);
     }
-    let last = trace
-        .last()
-        .map_or((f64::NAN, f64::NAN, f64::NAN), |t| (t.2, t.3, t.4));
-    Err(Error::NoConvergence(format!(
-        "exact: levels 1-{MAX_LEVEL} did not agree to {tol:e} (c) and {traction_tol:e} (tractions): \
-         the last two moved c by {:e} and the tractions by {:e} (c2 = {})",
-        last.1, last.2, last.0
-    )))
 }
 
 impl Monotonic {
@@ -594,14 +681,7 @@ impl Monotonic {
     /// The moment the guided punch carries, int x p dx (per P a; docs/theory_tangential.md
     /// section 2), by the graded rule of [`contact_rule`].
     pub(crate) fn moment(&self) -> f64 {
-        let s = &self.level.state;
-        contact_rule(edge_exponent(&self.k), s, s)
-            .into_iter()
-            .map(|(opx, omx, w)| {
-                let x = if opx < omx { opx - 1.0 } else { 1.0 - omx };
-                w * x * s.tractions(opx, omx).0
-            })
-            .sum()
+        moment(edge_exponent(&self.k), &self.level.state)
     }
 
     /// The slip's slope relative to the punch since the normal load, per pi B P:

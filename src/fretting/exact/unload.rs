@@ -28,8 +28,8 @@ pub(crate) mod tests;
 
 use super::frame::{Kind, Sizes, Solved, ZoneSpec, solve};
 use super::{
-    MAX_LEVEL, MAX_NEWTON, Monotonic, SAFETY, START_PANELS, STEP_LN_W1, W1_MIN, contact_rule,
-    distance, edge_exponent, edge_zone_scan,
+    MAX_LEVEL, MAX_NEWTON, Monotonic, START_PANELS, STEP_LN_W1, W1_MIN, edge_exponent,
+    edge_zone_scan,
 };
 use crate::error::{Error, Result};
 use crate::numerics::roots::chord2;
@@ -459,8 +459,8 @@ pub(crate) struct Unloading<'a, D: Start + ?Sized = Monotonic> {
     pub(crate) traction_error: f64,
     pub(crate) levels: usize,
     pub(crate) solves: usize,
-    /// Per level after the first: (level, wa, w2, |dc| + steps, traction distance, solves).
-    pub(crate) trace: Vec<(usize, f64, f64, f64, f64, usize)>,
+    /// Per level after the first, the unknowns (wa, w2) ([`super::Trace`]).
+    pub(crate) trace: super::Trace,
 }
 
 /// The unloading state at Q/P = qp (-mu < qp < Q*/P) from the loaded state `m`, a1, a2 to
@@ -576,49 +576,61 @@ fn ladder<'a, D: Start + ?Sized>(
     traction_tol: f64,
     start: (f64, Option<f64>),
     first: usize,
-    mut solves: usize,
+    solves: usize,
 ) -> Result<Unloading<'a, D>> {
     let g = edge_exponent(m.coupling());
     let mut jac = None;
-    let mut trace = Vec::new();
-    let mut prev: Option<Level> = None;
-    let (mut wa, mut w2) = start;
-    for level in first..=MAX_LEVEL {
-        let l = unload_level(m, wa, w2, qp, level, tol, &mut jac)?;
-        solves += l.solves;
-        (wa, w2) = (l.wa, l.w2);
-        if let Some(p) = &prev {
-            let dc = (l.wa - p.wa).abs()
-                + (l.w2.unwrap_or(0.0) - p.w2.unwrap_or(0.0)).abs()
-                + l.step
-                + p.step;
-            let dt = distance(g, &l.state, &p.state);
-            let (c_error, traction_error) = (SAFETY * dc, SAFETY * dt);
-            trace.push((level, l.wa, l.w2.unwrap_or(0.0), dc, dt, l.solves));
-            if c_error <= tol && traction_error <= traction_tol {
-                let u = Unloading {
-                    loaded: m,
-                    qp,
-                    level: l,
-                    c_error,
-                    traction_error,
-                    levels: level,
-                    solves,
-                    trace,
-                };
-                return u.admissible().map(|()| u);
-            }
+    let climbed = super::ladder(
+        g,
+        first,
+        tol,
+        traction_tol,
+        solves,
+        |level, prev: Option<&Level>| {
+            let (wa, w2) = prev.map_or(start, |p| (p.wa, p.w2));
+            unload_level(m, wa, w2, qp, level, tol, &mut jac)
+        },
+    )?;
+    match climbed {
+        Ok(l) => {
+            let u = Unloading {
+                loaded: m,
+                qp,
+                level: l.level,
+                c_error: l.c_error,
+                traction_error: l.traction_error,
+                levels: l.levels,
+                solves: l.solves,
+                trace: l.trace,
+            };
+            u.admissible().map(|()| u)
         }
-        prev = Some(l);
+        Err(trace) => {
+            let last = trace
+                .last()
+                .map_or((f64::NAN, f64::NAN, f64::NAN), |t| (t.1, t.3, t.4));
+            Err(Error::NoConvergence(format!(
+                "exact unloading: levels {first}-{MAX_LEVEL} did not agree to {tol:e} (a1, a2) and \
+                 {traction_tol:e} (tractions): the last two moved them by {:e} and {:e} (1 + a1 = {})",
+                last.1, last.2, last.0
+            )))
+        }
     }
-    let last = trace
-        .last()
-        .map_or((f64::NAN, f64::NAN, f64::NAN), |t| (t.1, t.3, t.4));
-    Err(Error::NoConvergence(format!(
-        "exact unloading: levels {first}-{MAX_LEVEL} did not agree to {tol:e} (a1, a2) and \
-         {traction_tol:e} (tractions): the last two moved them by {:e} and {:e} (1 + a1 = {})",
-        last.1, last.2, last.0
-    )))
+}
+
+impl super::Rung for Level {
+    fn unknowns(&self) -> (f64, f64) {
+        (self.wa, self.w2.unwrap_or(0.0))
+    }
+    fn step(&self) -> f64 {
+        self.step
+    }
+    fn state(&self) -> &Solved {
+        &self.state
+    }
+    fn solves(&self) -> usize {
+        self.solves
+    }
 }
 
 impl<D: Start + ?Sized> Unloading<'_, D> {
@@ -742,14 +754,7 @@ impl<D: Start + ?Sized> Unloading<'_, D> {
 
     /// int x p dx, the moment the guided punch carries (per P a).
     pub(crate) fn moment(&self) -> f64 {
-        let s = &self.level.state;
-        contact_rule(edge_exponent(self.loaded.coupling()), s, s)
-            .into_iter()
-            .map(|(opx, omx, w)| {
-                let x = if opx < omx { opx - 1.0 } else { 1.0 - omx };
-                w * x * s.tractions(opx, omx).0
-            })
-            .sum()
+        super::moment(edge_exponent(self.loaded.coupling()), &self.level.state)
     }
 }
 

@@ -6,7 +6,7 @@
 //! strong coupling, where the three-zone pattern is refused (docs/theory_tangential.md
 //! section 13); the dissipation of the first unloading against the grid's (section 14).
 
-use super::super::{monotonic, quadrature_forces};
+use super::super::{distance, monotonic, quadrature_forces};
 use super::*;
 use crate::Material;
 use crate::lcp::history::{History, Zone};
