@@ -696,11 +696,8 @@ impl Fixed {
         if !Arc::ptr_eq(&self.basis, &other.basis) {
             return (self.eval(p), other.eval(p));
         }
-        let n = self.coef.len();
-        let mut work = vec![0.0; 2 * n + self.basis.scratch_len()];
-        let (pv, rest) = work.split_at_mut(n);
-        let (qv, buf) = rest.split_at_mut(n);
-        self.basis.tractions_row(p, pv, qv, buf);
+        let work = self.columns_at(p);
+        let (pv, qv) = work.split_at(self.coef.len());
         let mu = self.basis.k.mu;
         let at = |coef: &[f64]| {
             let value: f64 = pv.iter().zip(coef).map(|(v, a)| v * a).sum();
@@ -714,12 +711,20 @@ impl Fixed {
         (at(&self.coef), at(&other.coef))
     }
 
-    pub(crate) fn eval_with_noise(&self, p: &Pt) -> (f64, f64, f64) {
+    /// The columns' values at a point: their p parts, then their q parts.
+    fn columns_at(&self, p: &Pt) -> Vec<f64> {
         let n = self.coef.len();
         let mut work = vec![0.0; 2 * n + self.basis.scratch_len()];
         let (pv, rest) = work.split_at_mut(n);
         let (qv, buf) = rest.split_at_mut(n);
         self.basis.tractions_row(p, pv, qv, buf);
+        work.truncate(2 * n);
+        work
+    }
+
+    pub(crate) fn eval_with_noise(&self, p: &Pt) -> (f64, f64, f64) {
+        let work = self.columns_at(p);
+        let (pv, qv) = work.split_at(self.coef.len());
         let (mut value, mut size) = (0.0, 0.0);
         for (v, a) in pv.iter().zip(&self.coef) {
             value += v * a;
