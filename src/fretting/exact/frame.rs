@@ -210,10 +210,18 @@ impl Frame {
 
     /// The point at x (given with 1 + x and 1 - x), strictly inside a zone.
     pub(crate) fn locate(&self, opx: f64, omx: f64) -> Loc {
+        // the zone by the offset with the more digits: 1 + x < z.opl + z.len is
+        // 1 - x > z.omh, and 2 - (1 - x) near x = 1 has lost them
         let i = self
             .zones
             .iter()
-            .position(|z| opx < z.opl + z.len)
+            .position(|z| {
+                if opx <= omx {
+                    opx < z.opl + z.len
+                } else {
+                    omx > z.omh
+                }
+            })
             .unwrap_or(self.zones.len() - 1);
         let z = &self.zones[i];
         let (from_lo, to_hi) = if z.opl <= z.omh {
