@@ -315,6 +315,25 @@ const SLOPE_FLOOR: f64 = 0.0125;
 /// twice those.
 const RATE_BOUND: (f64, f64) = (4.0, 8.0);
 
+/// Upper bounds on the tractions' move per unit of sigma at a fixed level's sizes,
+/// (int |dp|, int |dq~|) / |d sigma| = rate / |slope|, where the bases serve. Measured at
+/// level 1 over lc + [`SLOPE_STEP`] on the 919 served points of a 53 x 53 grid of the
+/// table's coordinates, the largest ratio per band of g:
+///
+/// | g | points | p | q~ |
+/// |---|---|---|---|
+/// | 0.002 .. 0.01 | 193 | 14.6 | 33.0 |
+/// | 0.01 .. 0.03 | 134 | 13.7 | 35.5 |
+/// | 0.03 .. 0.1 | 158 | 11.5 | 28.0 |
+/// | 0.1 .. 0.3 | 189 | 7.2 | 16.0 |
+/// | 0.3 .. 0.5 | 245 | 2.4 | 4.3 |
+///
+/// (at most 0.78 and 2.9 where 1 - c < 1e-3, 0.06 and 0.07 where c < 1e-3). The bounds are
+/// about twice the largest. A level's sigma at the starting lc bounds that lc's distance to
+/// the root, |sigma| / |slope|, so the tractions there are within this ratio times |sigma| of
+/// those at the root, whatever the slope ((S9)).
+const SIGMA_RATE_BOUND: (f64, f64) = (30.0, 70.0);
+
 /// The starting lc with level 1 there (solved on first use), the Gauss rules of [`distance`]
 /// for its g, and, once measured, sigma's slope and the tractions' move per unit of lc.
 struct First {
@@ -371,15 +390,21 @@ impl First {
 /// from [`first_half_level`] on, each one assembly and one factorisation at lc that solve both
 /// the level and its coarser columns ([`system::solve_fixed_pair`]), until the level's
 /// tractions agree with the coarser ones, or with the level below where that is nearer,
-/// within `traction_tol`, less what the uncertainty of c moves them ([`SAFETY`] times the move
-/// per lc times the uncertainty in lc). Each level also checks the edge: the root its sigma
-/// points to, sigma / slope away, must lie within the bound plus [`SAFETY`] times the
-/// difference from the coarser sigma, else None; None at once where the move alone exceeds
-/// `traction_tol`. c keeps its bound as its estimate.
+/// within `traction_tol`, less what the distance from lc to the root moves them. Each level
+/// also checks the edge: the root its sigma points to, sigma / slope away, must lie within the
+/// bound plus [`SAFETY`] times the difference from the coarser sigma, else None. c keeps its
+/// bound as its estimate.
 ///
-/// The slope and the move per lc are the bounds [`SLOPE_FLOOR`] and [`RATE_BOUND`] (a smaller
-/// slope and a larger move only make both tests stricter) until a test fails with them; then
-/// they are measured ([`First::measured`]) and the test is repeated.
+/// The tractions' move to the root is the smaller of two bounds on it ((S9)): the move per lc
+/// times the bound on lc's distance ([`SAFETY`] times each), and the move per sigma times
+/// the level's |sigma| plus [`SAFETY`] times its difference from the coarser sigma. The slope,
+/// the move per lc and the move per sigma are the bounds [`SLOPE_FLOOR`], [`RATE_BOUND`] and
+/// [`SIGMA_RATE_BOUND`] (a smaller slope and larger moves only make the tests stricter) until
+/// the edge test fails with them, or a level's tractions meet the tolerance but not with the
+/// move added while the bound by lc's distance alone exceeds it; then the slope and the move
+/// per lc are measured ([`First::measured`]) and the test is repeated. None where, measured,
+/// the move with sigma's uncertainty taken off |sigma| (which the levels above do not lower)
+/// exceeds `traction_tol`.
 fn at_fixed_edge(
     k: Constants,
     first: &mut First,
@@ -391,19 +416,6 @@ fn at_fixed_edge(
     let edge = StickEdge::from_logit(lc);
     let (c, w) = (edge.c, edge.one_minus_c);
     let uncertainty = bound / (c * w);
-    let moved = |s: Option<Sensitivity>| {
-        let rate = s.map_or(RATE_BOUND, |s| s.rate);
-        (SAFETY * rate.0 * uncertainty, SAFETY * rate.1 * uncertainty)
-    };
-    let mut shift = moved(first.measured);
-    if shift.0 + delta * shift.1 > traction_tol {
-        shift = moved(Some(first.measured(k)?));
-        if shift.0 + delta * shift.1 > traction_tol {
-            // the bound on c alone moves the tractions by more than the tolerance (thin slip
-            // zones: they move like 1 / (1 - c) per unit of c)
-            return None;
-        }
-    }
     let mut below: Option<Fixed> = None;
     for half in first_half_level(traction_tol)..=2 * MAX_LEVEL {
         let sizes = Sizes::at_real(0.5 * half as f64, c, w);
@@ -433,13 +445,43 @@ fn at_fixed_edge(
             (cur.sigma / slope).abs()
                 > uncertainty + SAFETY * ((cur.sigma - prev.sigma) / slope).abs()
         };
-        if off_edge(first.measured) {
-            if first.measured.is_some() || off_edge(Some(first.measured(k)?)) {
-                return None;
-            }
-            shift = moved(first.measured);
+        if off_edge(first.measured)
+            && (first.measured.is_some() || off_edge(Some(first.measured(k)?)))
+        {
+            return None;
         }
-        let parts = (SAFETY * dp + shift.0, SAFETY * dq + shift.1);
+        // lc's distance to the root by sigma, |sigma| / slope, with sigma's uncertainty
+        // added (spread) and taken off (least)
+        let spread = cur.sigma.abs() + SAFETY * (cur.sigma - prev.sigma).abs();
+        let least = (cur.sigma.abs() - SAFETY * (cur.sigma - prev.sigma).abs()).max(0.0);
+        let shift = |s: Option<Sensitivity>, sigma: f64| {
+            let (by_lc, by_sigma) = match s {
+                Some(s) => (s.rate, (s.rate.0 / s.slope.abs(), s.rate.1 / s.slope.abs())),
+                None => (RATE_BOUND, SIGMA_RATE_BOUND),
+            };
+            (
+                SAFETY * (by_lc.0 * uncertainty).min(by_sigma.0 * sigma),
+                SAFETY * (by_lc.1 * uncertainty).min(by_sigma.1 * sigma),
+            )
+        };
+        let exceeds = |sh: (f64, f64)| sh.0 + delta * sh.1 > traction_tol;
+        let mut moved = shift(first.measured, spread);
+        if first.measured.is_none()
+            && exceeds(shift(None, f64::INFINITY))
+            && exceeds((SAFETY * dp + moved.0, SAFETY * dq + moved.1))
+            && !exceeds((SAFETY * dp, SAFETY * dq))
+        {
+            // the move alone fails the level, and the bound on lc's distance would fail
+            // every level
+            moved = shift(Some(first.measured(k)?), spread);
+        }
+        if let Some(s) = first.measured
+            && exceeds(shift(Some(s), least))
+        {
+            // no level above takes the move below the tolerance
+            return None;
+        }
+        let parts = (SAFETY * dp + moved.0, SAFETY * dq + moved.1);
         if parts.0 + delta * parts.1 <= traction_tol && cur.residual <= traction_tol {
             match verdict(&cur, k.mu, traction_tol, delta, parts) {
                 Verdict::Answer(parts) => {

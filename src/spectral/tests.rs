@@ -169,8 +169,9 @@ fn newton_ladder_moves_to_the_root() {
     }
 }
 
-/// The bounds that stand in for the measured slope and move per lc at a known stick edge
-/// ([`SLOPE_FLOOR`], [`RATE_BOUND`], measured on a 53 x 53 grid) hold on another grid of the
+/// The bounds that stand in for the measured slope and moves per lc and per sigma at a known
+/// stick edge ([`SLOPE_FLOOR`], [`RATE_BOUND`], [`SIGMA_RATE_BOUND`], measured on a 53 x 53
+/// grid) hold on another grid of the
 /// table's coordinates (37 x 37, none of its nodes on the first) and at the smallest stick
 /// zones served, measured as [`First::measured`] measures them.
 #[test]
@@ -196,7 +197,7 @@ fn sensitivity_bounds_hold() {
         (0.8, 0.1893),
         (0.99, 0.6659),
     ]);
-    let (mut served, mut worst) = (0, [0.0f64; 3]);
+    let (mut served, mut worst) = (0, [0.0f64; 5]);
     for (b, mu) in scenes {
         let Some((lc, _)) = crate::stick_edge_table::lookup(b, mu) else {
             continue;
@@ -218,6 +219,13 @@ fn sensitivity_bounds_hold() {
         worst[0] = worst[0].max(SLOPE_FLOOR * b / s.slope.abs());
         worst[1] = worst[1].max(s.rate.0 / RATE_BOUND.0);
         worst[2] = worst[2].max(s.rate.1 / RATE_BOUND.1);
+        let per_sigma = (s.rate.0 / s.slope.abs(), s.rate.1 / s.slope.abs());
+        worst[3] = worst[3].max(per_sigma.0 / SIGMA_RATE_BOUND.0);
+        worst[4] = worst[4].max(per_sigma.1 / SIGMA_RATE_BOUND.1);
+        assert!(
+            per_sigma.0 <= SIGMA_RATE_BOUND.0 && per_sigma.1 <= SIGMA_RATE_BOUND.1,
+            "({b}, {mu}): move per sigma {per_sigma:?} above the bound"
+        );
         assert!(
             s.slope.abs() >= SLOPE_FLOOR * b,
             "({b}, {mu}): slope {:e} below the floor",
@@ -230,8 +238,9 @@ fn sensitivity_bounds_hold() {
         );
     }
     eprintln!(
-        "{served} served points; floor / slope at most {:.2}, rate / bound at most {:.2} (p), {:.2} (q)",
-        worst[0], worst[1], worst[2]
+        "{served} served points; floor / slope at most {:.2}, rate / bound at most {:.2} (p), \
+         {:.2} (q), per sigma / bound at most {:.2} (p), {:.2} (q)",
+        worst[0], worst[1], worst[2], worst[3], worst[4]
     );
     assert!(served > 250, "only {served} served points");
 }
