@@ -18,7 +18,7 @@
 //!   with half the load steps (each error is first order, so the difference from the halved
 //!   run estimates the error of the full run; the two are added and doubled for safety, the
 //!   observed orders being 0.7-1.3).
-//! - [`CycleMethod::Exact`], the exact solvers ([`exact`]) for a [`LoadPath`] where they
+//! - [`CycleMethod::Exact`], the exact solvers (`exact`) for a [`LoadPath`] where they
 //!   answer (the normal load, monotonic loading, the branches after a reversal that keep one
 //!   stick set with a slip zone at each end); everything else, [`Fretting::solve`] included,
 //!   is refused with a clear status and message.
