@@ -191,7 +191,8 @@ const PROGRAMS: [&str; 13] = [
 /// kinds has one under valgrind in the fast tier (residuals: spence_residuals, fields:
 /// field_errors, COUPLED: semantics and hostile); threads (31 s under valgrind on 2 loaded
 /// cores) and field_slip (60 s) are the costliest of all; fretting_exact runs the exact
-/// solvers (fretting's grid history is the fast tier's).
+/// solvers (4.6 min under valgrind in quick mode, clean; fretting's grid history is the fast
+/// tier's).
 const SLOW_MEMCHECK: [&str; 6] = [
     "goodman_residuals",
     "threads",
