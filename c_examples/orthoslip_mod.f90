@@ -26,6 +26,7 @@ module orthoslip_mod
 
   ! orthoslip_cycle_method
   integer(c_int), parameter, public :: ORTHOSLIP_CYCLE_METHOD_LCP_HISTORY = 0
+  integer(c_int), parameter, public :: ORTHOSLIP_CYCLE_METHOD_EXACT = 1
   ! orthoslip_cycle_state
   integer(c_int), parameter, public :: ORTHOSLIP_CYCLE_SHAKEDOWN = 0
   integer(c_int), parameter, public :: ORTHOSLIP_CYCLE_STEADY_SLIP = 1

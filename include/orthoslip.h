@@ -122,6 +122,15 @@ typedef enum {
    * step (docs/theory_tangential.md).
    */
   ORTHOSLIP_CYCLE_METHOD_LCP_HISTORY = 0,
+  /**
+   * The exact solvers (docs/theory_tangential.md sections 10-15), to the contact's
+   * tolerances: for a load path the normal load, monotonic loading and the branches after
+   * each reversal where they keep one stick set with a slip zone at each end; other loads
+   * are refused with the solver's status and a message (the corner structure of the
+   * ply's unloading above about -0.48 Q* and of its reloading is not built). A fretting
+   * run refuses it (ORTHOSLIP_ERROR_INVALID_ARGUMENT: the exact cycle is not built).
+   */
+  ORTHOSLIP_CYCLE_METHOD_EXACT = 1,
 } orthoslip_cycle_method;
 
 /**
@@ -166,9 +175,11 @@ typedef struct orthoslip_cycles orthoslip_cycles;
 
 /**
  * A load path (opaque): the normal load P, then the tangential load Q moved monotonically
- * from one value to the next by `orthoslip_history_load`. A grid with half the panels runs
- * alongside for the error estimates. The getters may run from many threads at once;
- * `orthoslip_history_load` and `orthoslip_history_free` need exclusive access.
+ * from one value to the next by `orthoslip_history_load`. With
+ * ORTHOSLIP_CYCLE_METHOD_LCP_HISTORY a grid with half the panels runs alongside for the
+ * error estimates; with ORTHOSLIP_CYCLE_METHOD_EXACT the exact solvers' own estimates.
+ * The getters may run from many threads at once; `orthoslip_history_load` and
+ * `orthoslip_history_free` need exclusive access.
  */
 typedef struct orthoslip_history orthoslip_history;
 
@@ -670,7 +681,10 @@ orthoslip_status orthoslip_solution_stick_zone(const orthoslip_solution *s, doub
 /**
  * The normal-load state (Q = 0) of contact `k` (its material and friction; its method and
  * tolerances are not used: the path is solved by the default cycle options,
- * ORTHOSLIP_CYCLE_METHOD_LCP_HISTORY with 100 panels per half-width and 10 steps per load).
+ * ORTHOSLIP_CYCLE_METHOD_LCP_HISTORY with 100 panels per half-width and 10 steps per load;
+ * with options choosing ORTHOSLIP_CYCLE_METHOD_EXACT, `orthoslip_history_new_with_options`
+ * solves to k's tolerances: `orthoslip_contact_set_tolerance` for the stick set's ends,
+ * `orthoslip_contact_set_traction_tolerance` for the tractions).
  *
  * On success `*out` owns a new handle, to be released with `orthoslip_history_free`.
  * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER, ORTHOSLIP_ERROR_INVALID_ARGUMENT
@@ -702,13 +716,18 @@ void orthoslip_history_free(orthoslip_history *h);
 
 /**
  * Q moves monotonically from its current value to q_over_p * P (in the options' number of
- * steps).
+ * steps; with ORTHOSLIP_CYCLE_METHOD_EXACT one solve of the branch at q_over_p).
  *
  * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER, ORTHOSLIP_ERROR_INVALID_ARGUMENT
  * (q_over_p NaN or infinite, or |q_over_p| >= mu: gross sliding, refused),
  * ORTHOSLIP_ERROR_NO_ADMISSIBLE_SOLUTION (the pressure turns negative somewhere: the punch
- * would lift off, outside this model) or ORTHOSLIP_ERROR_NO_CONVERGENCE. On failure the
- * history is unchanged.
+ * would lift off, outside this model) or ORTHOSLIP_ERROR_NO_CONVERGENCE. With
+ * ORTHOSLIP_CYCLE_METHOD_EXACT a load the exact solvers do not answer returns their status
+ * (ORTHOSLIP_ERROR_NO_CONVERGENCE, ORTHOSLIP_ERROR_NO_ADMISSIBLE_SOLUTION: the answer of
+ * the built zone pattern slips against its friction, ORTHOSLIP_ERROR_INVALID_ARGUMENT:
+ * outside the branch the solver handles, or ORTHOSLIP_ERROR_TOLERANCE_NOT_MET) with a
+ * message naming the step and what the exact path covers; ORTHOSLIP_CYCLE_METHOD_LCP_HISTORY
+ * answers those paths. On failure the history is unchanged.
  *
  * # Safety
  * `h` must be NULL or a live history not used by another thread during the call.
@@ -717,8 +736,9 @@ orthoslip_status orthoslip_history_load(orthoslip_history *h, double q_over_p);
 
 /**
  * Writes the current state: Q/P, the punch's tangential displacement u (per P/E, in a fixed
- * gauge: differences along the path are meaningful) and the moment the non-rotating punch
- * carries, int x p dx (per P a).
+ * gauge: differences along the path are meaningful; NaN with ORTHOSLIP_CYCLE_METHOD_EXACT,
+ * whose solvers do not compute it) and the moment the non-rotating punch carries,
+ * int x p dx (per P a).
  *
  * Returns ORTHOSLIP_OK or ORTHOSLIP_ERROR_NULL_POINTER (nothing written).
  *
@@ -733,7 +753,9 @@ orthoslip_status orthoslip_history_state(const orthoslip_history *h,
 /**
  * Writes the stick set [c1, c2] of the step that reached the current state (c1 = -1 or
  * c2 = 1 when it reaches a punch edge; NaN when nothing sticks) and the estimate of the
- * ends' error (from the half-panel grid; +INFINITY if that grid failed).
+ * ends' error (from the half-panel grid; +INFINITY if that grid failed). With
+ * ORTHOSLIP_CYCLE_METHOD_EXACT: the stick set since the current branch began (since the
+ * normal load while loading) and the exact solver's estimate of |dc1| + |dc2|.
  *
  * Returns ORTHOSLIP_OK or ORTHOSLIP_ERROR_NULL_POINTER (nothing written).
  *
@@ -748,8 +770,10 @@ orthoslip_status orthoslip_history_stick_zone(const orthoslip_history *h,
 /**
  * Evaluates the current state at n points x[i] in [-1, 1]: p and q (per P/a; panel values,
  * piecewise constant) and the zone of the step that reached it: 0 stick, +1 the solid
- * slipped in +x relative to the punch (q = -mu p), -1 in -x (q = +mu p). `x` may alias `p`
- * or `q`.
+ * slipped in +x relative to the punch (q = -mu p), -1 in -x (q = +mu p). With
+ * ORTHOSLIP_CYCLE_METHOD_EXACT: the exact p and q at x (p = +INFINITY at x = +-1, q
+ * infinite of its sign there) and the zone since the current branch began. `x` may alias
+ * `p` or `q`.
  *
  * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER (any pointer NULL, also when n = 0) or
  * ORTHOSLIP_ERROR_INVALID_ARGUMENT (some x[i] NaN or outside [-1, 1]; nothing written).
@@ -769,7 +793,10 @@ orthoslip_status orthoslip_history_tractions(const orthoslip_history *h,
  * Writes the energy dissipated since the normal load (per unit thickness, P^2/E) and the
  * estimate of its grid error (the load-step error, first order, is not included).
  *
- * Returns ORTHOSLIP_OK or ORTHOSLIP_ERROR_NULL_POINTER (nothing written).
+ * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER or ORTHOSLIP_ERROR_INVALID_ARGUMENT
+ * (ORTHOSLIP_CYCLE_METHOD_EXACT once Q has moved: the exact solvers do not integrate the
+ * dissipation along a path; ORTHOSLIP_CYCLE_METHOD_LCP_HISTORY does); nothing written on
+ * failure.
  *
  * # Safety
  * `h` must be NULL or a live history; the outputs NULL or valid for one write each.
@@ -812,7 +839,10 @@ orthoslip_status orthoslip_contact_solve_cycles(const orthoslip_contact *k,
                                                 orthoslip_cycles **out);
 
 /**
- * As `orthoslip_contact_solve_cycles`, with options `o`.
+ * As `orthoslip_contact_solve_cycles`, with options `o`. Options choosing
+ * ORTHOSLIP_CYCLE_METHOD_EXACT are refused with ORTHOSLIP_ERROR_INVALID_ARGUMENT and a
+ * message: the exact cycle is not built (a load path follows the exact branches where
+ * they answer).
  *
  * # Safety
  * `k` and `o` must be NULL or live handles; `out` NULL or valid for writing one pointer.
@@ -1130,8 +1160,10 @@ orthoslip_status orthoslip_cycles_loop_error(const orthoslip_cycles *cy,
 
 /**
  * The current state as a solution: tractions, stresses, slip and estimates through the
- * existing getters (`orthoslip_solution_*`; method ORTHOSLIP_METHOD_LCP). The state is
- * copied: `h` may be loaded further or freed, the solution keeps this state.
+ * existing getters (`orthoslip_solution_*`; method ORTHOSLIP_METHOD_LCP, and
+ * ORTHOSLIP_METHOD_COUPLED for ORTHOSLIP_CYCLE_METHOD_EXACT, whose exact tractions it
+ * carries at any x, the stresses from them fitted on panels graded towards every zone end).
+ * The state is copied: `h` may be loaded further or freed, the solution keeps this state.
  * - `orthoslip_solution_tractions`: p and q on [-1, 1] without symmetry, the grid's panel
  *   values presented as the normal-load LCP solution presents its own (regular parts
  *   p / w, q / w linear between the midpoints, w = (1 - |x|)^(-g) with the normal-load edge

@@ -108,6 +108,11 @@ impl Contact {
         Ok(())
     }
 
+    /// The target for |c - c_exact| ([`Contact::set_tolerance`]).
+    pub fn tolerance(&self) -> f64 {
+        self.tolerance
+    }
+
     /// The material.
     pub fn material(&self) -> &Material {
         &self.material

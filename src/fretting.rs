@@ -11,12 +11,17 @@
 //!   limit is reached, with per cycle the dissipated energy, the slip amplitude, the
 //!   Q-displacement loop, the Ruiz parameters and the stick sets.
 //!
-//! The method is a [`CycleMethod`]; the only one today is [`CycleMethod::LcpHistory`], the
-//! paper's grid LCP with a loading history (`crate::lcp::history`): first order in the panel
-//! width and in the load step. Every result carries an error estimate from two more runs, one
-//! with half the panels and one with half the load steps (each error is first order, so the
-//! difference from the halved run estimates the error of the full run; the two are added and
-//! doubled for safety, the observed orders being 0.7-1.3).
+//! The method is a [`CycleMethod`]:
+//! - [`CycleMethod::LcpHistory`], the paper's grid LCP with a loading history
+//!   (`crate::lcp::history`): first order in the panel width and in the load step. Every
+//!   result carries an error estimate from two more runs, one with half the panels and one
+//!   with half the load steps (each error is first order, so the difference from the halved
+//!   run estimates the error of the full run; the two are added and doubled for safety, the
+//!   observed orders being 0.7-1.3).
+//! - [`CycleMethod::Exact`], the exact solvers (`exact`) for a [`LoadPath`] where they
+//!   answer (the normal load, monotonic loading, the branches after a reversal that keep one
+//!   stick set with a slip zone at each end); everything else, [`Fretting::solve`] included,
+//!   is refused with a clear status and message.
 //!
 //! Units: x per a; p, q, tau and sigma_xx per P/a; displacements and slip amplitudes per P/E;
 //! energies per unit thickness in P^2/E; F1 in P^2/(a E); F2 in P^3/(a^2 E). E is the
@@ -35,26 +40,33 @@ use crate::problem::{Coupling, Profile, StickEdge};
 
 pub use crate::lcp::history::Zone;
 
-/// The exact solver of monotonic loading (docs/theory_tangential.md sections 10-12) and of
-/// the first unloading's three-zone phase (sections 13-14), reached only from their tests
-/// until the load path and the cycles route to them (issue 27's next steps: the corner
-/// structure of the unloading at strong coupling and early in the branch, the reloading
-/// branch, then `CycleMethod`'s exact value).
+/// The exact solvers of monotonic loading (docs/theory_tangential.md sections 10-12) and of
+/// the unloading and reloading branches' three-zone phases (sections 13-15), reached by
+/// [`LoadPath`] with [`CycleMethod::Exact`] (`exact::path`); the corner structure of the
+/// unloading at strong coupling and early in the ply's branch, and of the ply's reloading,
+/// is not built.
 #[cfg_attr(not(test), allow(dead_code))]
 pub(crate) mod exact;
 
 /// How a cycle is solved; the discriminants are the C ABI's `orthoslip_cycle_method` values
-/// (append-only: an exact method will get the next value).
+/// (append-only).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum CycleMethod {
     /// The paper's grid LCP with a loading history: 2n uniform panels on the contact, one
     /// complementarity problem per load step (first order in the panel width and the step).
     LcpHistory = 0,
+    /// The exact solvers of docs/theory_tangential.md sections 10-15 (global bases per zone
+    /// carrying the zones' exponents, c1 and c2 to 1e-10 where they answer), to the
+    /// contact's tolerances: for [`LoadPath`] the normal load, monotonic loading and the
+    /// branches after each reversal where they keep one stick set with a slip zone at each
+    /// end; other loads are refused with a clear status, not answered by the grid.
+    /// [`Fretting::solve`] refuses it (the exact cycle is not built).
+    Exact = 1,
 }
 
 impl CycleMethod {
     /// All methods, in discriminant order.
-    pub const ALL: [CycleMethod; 1] = [CycleMethod::LcpHistory];
+    pub const ALL: [CycleMethod; 2] = [CycleMethod::LcpHistory, CycleMethod::Exact];
 
     /// The method with this C ABI value, if any.
     pub fn from_code(code: i32) -> Option<CycleMethod> {
@@ -517,7 +529,9 @@ impl Fretting {
     /// until the state repeats or `options.max_cycles` cycles are done.
     ///
     /// Errors: `InvalidArgument` for options out of range, a contact with mu = 0, an
-    /// amplitude that is not finite, <= 0, or >= mu (gross sliding); `NoAdmissibleSolution`
+    /// amplitude that is not finite, <= 0, or >= mu (gross sliding), and for
+    /// [`CycleMethod::Exact`] (not built for cycles: the message says what is missing);
+    /// `NoAdmissibleSolution`
     /// when the pressure turns negative somewhere on the path (strong coupling at large
     /// amplitudes: the punch would lift off, which this model does not describe);
     /// `NoConvergence` when a load step's Newton iteration fails.
@@ -529,6 +543,19 @@ impl Fretting {
             return Err(Error::InvalidArgument(format!(
                 "amplitude Q*/P = {q_amp_over_p} must be > 0 (the cycle runs +Q* -> -Q* -> +Q*)"
             )));
+        }
+        if options.method == CycleMethod::Exact {
+            return Err(Error::InvalidArgument(
+                "CycleMethod::Exact (ORTHOSLIP_CYCLE_METHOD_EXACT) does not solve fretting \
+                 cycles: the exact cycle (the \
+                 dissipation (T8) integrated over each branch, the full-stick branches of the \
+                 bp = 0 closed forms (T13a), (T15a), and the corner structure of the \
+                 unloading and reloading at bp > 0, docs/theory_tangential.md sections 13-15) \
+                 is not built; CycleMethod::LcpHistory (ORTHOSLIP_CYCLE_METHOD_LCP_HISTORY) \
+                 answers it, and a load path \
+                 (LoadPath) follows the exact branches where they answer"
+                    .into(),
+            ));
         }
         let unit = unit(contact);
         let (n, s) = (options.panels, options.steps);
@@ -693,22 +720,43 @@ fn panel_index(m: usize, x: f64) -> usize {
 }
 
 /// A load path an FE code scripts: the normal load P, then Q moved monotonically to one value
-/// after another ([`LoadPath::load`]). A second grid with half the panels runs alongside for
-/// the error estimates (first order: their difference estimates the error).
+/// after another ([`LoadPath::load`]).
+///
+/// - [`CycleMethod::LcpHistory`]: the grid, with a second grid of half the panels alongside
+///   for the error estimates (first order: their difference estimates the error).
+/// - [`CycleMethod::Exact`]: the exact solvers (docs/theory_tangential.md sections 10-15),
+///   to the contact's tolerances ([`Contact::tolerance`] on the stick set's ends,
+///   [`Contact::traction_tolerance`] on the tractions in the norm (T1)): the normal load,
+///   monotonic loading from Q = 0 (either sign), and after each reversal of the load
+///   direction the branch from the state where it reversed, where that branch keeps one
+///   stick set with a slip zone at each end. A load the exact solvers do not answer is
+///   refused with the solver's status and a message that says so (the corner structure of
+///   the ply's unloading above about -0.48 Q* and of its reloading is not built); the grid
+///   answers every path, and is never used in its place.
 pub struct LoadPath {
     material: Material,
+    unit: f64,
+    engine: Engine,
+}
+
+enum Engine {
+    Grid(Box<Grid>),
+    Exact(exact::path::ExactPath),
+}
+
+struct Grid {
     fine: History,
     coarse: Option<History>,
     steps: usize,
-    unit: f64,
     dissipated: f64,
     dissipated_coarse: f64,
 }
 
 impl LoadPath {
-    /// The normal-load state (Q = 0) of `contact` (its material and friction) on
-    /// `options.panels` panels per half-width; each [`LoadPath::load`] takes `options.steps`
-    /// steps.
+    /// The normal-load state (Q = 0) of `contact` (its material and friction; with
+    /// [`CycleMethod::Exact`] its tolerances too). With [`CycleMethod::LcpHistory`] on
+    /// `options.panels` panels per half-width, each [`LoadPath::load`] taking `options.steps`
+    /// steps; [`CycleMethod::Exact`] uses neither.
     ///
     /// Errors: `InvalidArgument` for options out of range or mu = 0 (no tangential load can be
     /// carried; the normal load alone is [`Contact::solve`]); `NoConvergence`.
@@ -716,102 +764,192 @@ impl LoadPath {
         options.validate()?;
         let k = contact.coupling();
         check_load(0.0, k.mu, "load")?;
-        let fine = History::new(&k, options.panels)?;
-        let coarse = History::new(&k, options.panels / 2).ok();
+        let engine = match options.method {
+            CycleMethod::LcpHistory => {
+                let fine = History::new(&k, options.panels)?;
+                let coarse = History::new(&k, options.panels / 2).ok();
+                Engine::Grid(Box::new(Grid {
+                    fine,
+                    coarse,
+                    steps: options.steps,
+                    dissipated: 0.0,
+                    dissipated_coarse: 0.0,
+                }))
+            }
+            CycleMethod::Exact => Engine::Exact(exact::path::ExactPath::new(
+                &k,
+                contact.tolerance(),
+                contact.traction_tolerance(),
+            )?),
+        };
         Ok(Self {
             material: *contact.material(),
-            fine,
-            coarse,
-            steps: options.steps,
             unit: unit(contact),
-            dissipated: 0.0,
-            dissipated_coarse: 0.0,
+            engine,
         })
+    }
+
+    /// The method.
+    pub fn method(&self) -> CycleMethod {
+        match self.engine {
+            Engine::Grid(_) => CycleMethod::LcpHistory,
+            Engine::Exact(_) => CycleMethod::Exact,
+        }
+    }
+
+    fn coupling(&self) -> Coupling {
+        match &self.engine {
+            Engine::Grid(g) => g.fine.coupling(),
+            Engine::Exact(e) => e.k,
+        }
     }
 
     /// Moves Q/P monotonically from its current value to `q_over_p`.
     ///
     /// Errors: `InvalidArgument` for q_over_p not finite or |q_over_p| >= mu (gross
-    /// sliding); `NoAdmissibleSolution` (p < 0 somewhere: lift-off) or `NoConvergence`. On
-    /// any error the path is unchanged.
+    /// sliding); `NoAdmissibleSolution` (the grid: p < 0 somewhere, lift-off) or
+    /// `NoConvergence`. With [`CycleMethod::Exact`], a load the exact solvers do not answer
+    /// gives their status (`NoConvergence`, `NoAdmissibleSolution`, `InvalidArgument`, or
+    /// `ToleranceNotMet`) with a message naming the step, the solver's reason and what the
+    /// exact path covers. On any error the path is unchanged.
     pub fn load(&mut self, q_over_p: f64) -> Result<()> {
-        check_load(q_over_p, self.fine.coupling().mu, "load")?;
-        let states = self.fine.load(q_over_p, self.steps)?;
-        self.dissipated += states.iter().map(|s| s.dissipation).sum::<f64>();
-        if let Some(c) = self.coarse.as_mut() {
-            match c.load(q_over_p, self.steps) {
-                Ok(st) => self.dissipated_coarse += st.iter().map(|s| s.dissipation).sum::<f64>(),
-                Err(_) => self.coarse = None,
+        check_load(q_over_p, self.coupling().mu, "load")?;
+        match &mut self.engine {
+            Engine::Grid(g) => {
+                let states = g.fine.load(q_over_p, g.steps)?;
+                g.dissipated += states.iter().map(|s| s.dissipation).sum::<f64>();
+                if let Some(c) = g.coarse.as_mut() {
+                    match c.load(q_over_p, g.steps) {
+                        Ok(st) => {
+                            g.dissipated_coarse += st.iter().map(|s| s.dissipation).sum::<f64>()
+                        }
+                        Err(_) => g.coarse = None,
+                    }
+                }
+                Ok(())
             }
+            Engine::Exact(e) => e.load(q_over_p),
         }
-        Ok(())
     }
 
-    /// The current state.
+    /// The current state. With [`CycleMethod::Exact`] there is no grid: `p`, `q` and `zones`
+    /// are empty (the state at any x is [`LoadPath::tractions_at`]) and the punch
+    /// displacement is NaN (not computed by the exact solvers).
     pub fn point(&self) -> PathPoint {
-        PathPoint::from_state(self.fine.state(), self.unit)
+        match &self.engine {
+            Engine::Grid(g) => PathPoint::from_state(g.fine.state(), self.unit),
+            Engine::Exact(e) => PathPoint {
+                q_over_p: e.q_over_p(),
+                stick: e.stick_set(),
+                punch: f64::NAN,
+                p: Vec::new(),
+                q: Vec::new(),
+                zones: Vec::new(),
+            },
+        }
     }
 
     /// The current Q/P.
     pub fn q_over_p(&self) -> f64 {
-        self.fine.state().q_over_p
+        match &self.engine {
+            Engine::Grid(g) => g.fine.state().q_over_p,
+            Engine::Exact(e) => e.q_over_p(),
+        }
     }
 
-    /// The 2n panel midpoints.
+    /// The 2n panel midpoints (none with [`CycleMethod::Exact`]).
     pub fn nodes(&self) -> Vec<f64> {
-        self.fine.nodes()
+        match &self.engine {
+            Engine::Grid(g) => g.fine.nodes(),
+            Engine::Exact(_) => Vec::new(),
+        }
     }
 
-    /// Panel width (units of a).
+    /// Panel width (units of a; NaN with [`CycleMethod::Exact`]).
     pub fn h(&self) -> f64 {
-        self.fine.h()
+        match &self.engine {
+            Engine::Grid(g) => g.fine.h(),
+            Engine::Exact(_) => f64::NAN,
+        }
     }
 
-    /// The stick set [c1, c2] of the step that reached the current state, and the estimate
-    /// of the ends' error (the larger, from the half-panel grid).
+    /// The stick set [c1, c2] and the estimate of its ends' error. The grid: the stick set of
+    /// the step that reached the current state, the error the larger end's against the
+    /// half-panel grid. Exact: the stick set since the current branch's start (since the
+    /// normal load while loading), the estimate bounds |dc1| + |dc2|.
     pub fn stick_zone(&self) -> ((f64, f64), f64) {
-        let (c1, c2) = self.fine.state().stick;
-        let err = self.coarse.as_ref().map_or(f64::INFINITY, |c| {
-            let (d1, d2) = c.state().stick;
-            SAFETY * gap(c1, d1).max(gap(c2, d2))
-        });
-        ((c1, c2), err)
+        match &self.engine {
+            Engine::Grid(g) => {
+                let (c1, c2) = g.fine.state().stick;
+                let err = g.coarse.as_ref().map_or(f64::INFINITY, |c| {
+                    let (d1, d2) = c.state().stick;
+                    SAFETY * gap(c1, d1).max(gap(c2, d2))
+                });
+                ((c1, c2), err)
+            }
+            Engine::Exact(e) => (e.stick_set(), e.estimates().0),
+        }
     }
 
-    /// The traction error estimate int (|dp| + |dq|) dx (units of P) against the half-panel
-    /// grid, read at the fine panels.
+    /// The traction error estimate int (|dp| + |dq|) dx (units of P): the grid's against the
+    /// half-panel grid, read at the fine panels; the exact solvers' from their ladder of
+    /// levels (plus the estimate of the state the branch started from).
     pub fn traction_error(&self) -> f64 {
-        let Some(c) = self.coarse.as_ref() else {
+        let g = match &self.engine {
+            Engine::Grid(g) => g,
+            Engine::Exact(e) => return e.estimates().1,
+        };
+        let Some(c) = g.coarse.as_ref() else {
             return f64::INFINITY;
         };
-        let (f, g) = (self.fine.state(), c.state());
-        let h = self.fine.h();
+        let (f, s) = (g.fine.state(), c.state());
+        let h = g.fine.h();
         SAFETY
             * (0..f.p.len())
-                .zip(self.fine.nodes())
+                .zip(g.fine.nodes())
                 .map(|(i, x)| {
-                    let j = panel_index(g.p.len(), x);
-                    h * ((f.p[i] - g.p[j]).abs() + (f.q[i] - g.q[j]).abs())
+                    let j = panel_index(s.p.len(), x);
+                    h * ((f.p[i] - s.p[j]).abs() + (f.q[i] - s.q[j]).abs())
                 })
                 .sum::<f64>()
     }
 
     /// Energy dissipated since the normal load (P^2/E), with the estimate of its grid error
     /// (the load-step error is not included: a path's steps are the caller's choice).
-    pub fn dissipated(&self) -> Estimate {
-        Estimate {
-            value: self.dissipated * self.unit,
-            error: if self.coarse.is_some() {
-                SAFETY * (self.dissipated - self.dissipated_coarse).abs() * self.unit
-            } else {
-                f64::INFINITY
-            },
+    ///
+    /// Errors: with [`CycleMethod::Exact`], `InvalidArgument` once Q has moved (0 at the
+    /// normal load): the exact solvers do not integrate the dissipation (T8) along a path;
+    /// [`CycleMethod::LcpHistory`] does.
+    pub fn dissipated(&self) -> Result<Estimate> {
+        match &self.engine {
+            Engine::Grid(g) => Ok(Estimate {
+                value: g.dissipated * self.unit,
+                error: if g.coarse.is_some() {
+                    SAFETY * (g.dissipated - g.dissipated_coarse).abs() * self.unit
+                } else {
+                    f64::INFINITY
+                },
+            }),
+            Engine::Exact(e) if e.q_over_p() == 0.0 && e.is_normal() => Ok(Estimate {
+                value: 0.0,
+                error: 0.0,
+            }),
+            Engine::Exact(_) => Err(Error::InvalidArgument(
+                "CycleMethod::Exact (ORTHOSLIP_CYCLE_METHOD_EXACT) does not compute the energy \
+                 dissipated along a load path (the dissipation (T8) integrated over each \
+                 branch's loads is not built); CycleMethod::LcpHistory \
+                 (ORTHOSLIP_CYCLE_METHOD_LCP_HISTORY) answers it"
+                    .into(),
+            )),
         }
     }
 
     /// The moment int x p dx the non-rotating punch carries (units of P a).
     pub fn moment(&self) -> f64 {
-        self.fine.moment()
+        match &self.engine {
+            Engine::Grid(g) => g.fine.moment(),
+            Engine::Exact(e) => e.moment(),
+        }
     }
 
     /// The panel value at x in [-1, 1] of a profile at the nodes (see [`Fretting::at`]).
@@ -819,26 +957,78 @@ impl LoadPath {
         panel_value(profile, x)
     }
 
-    /// The current state as a [`Solution`] (method [`Method::Lcp`]): its tractions on
-    /// [-1, 1] as the normal-load LCP solution presents its grid ([`StateProfile`]), the
-    /// stick set [c1, c2] ([`Solution::stick_set`]) with the estimate of its ends' error as
+    /// (p, q) and the zone at x in [-1, 1] of the current state: the grid's panel values and
+    /// the zone of the step that reached the state; the exact tractions (p = +infinity at
+    /// x = +-1, q infinite of its sign there) and the zone since the current branch's start
+    /// (stick on [c1, c2]; a slip zone's direction from q = -+ mu p there).
+    ///
+    /// Errors: `InvalidArgument` for x NaN or outside [-1, 1].
+    pub fn tractions_at(&self, x: f64) -> Result<(f64, f64, Zone)> {
+        match &self.engine {
+            Engine::Grid(g) => {
+                let s = g.fine.state();
+                let i = {
+                    panel_value(&s.p, x)?;
+                    panel_index(s.p.len(), x)
+                };
+                Ok((s.p[i], s.q[i], s.zones[i]))
+            }
+            Engine::Exact(e) => {
+                if !(-1.0..=1.0).contains(&x) {
+                    return Err(Error::InvalidArgument(format!(
+                        "x = {x} is not on the contact [-1, 1]"
+                    )));
+                }
+                let profile = exact::path::ExactProfile { path: e.clone() };
+                let (p, q) = profile.tractions(x);
+                let (c1, c2) = e.stick_set();
+                let zone = if x >= c1 && x <= c2 {
+                    Zone::Stick
+                } else if q < 0.0 {
+                    Zone::SlipPositive
+                } else {
+                    Zone::SlipNegative
+                };
+                Ok((p, q, zone))
+            }
+        }
+    }
+
+    /// The current state as a [`Solution`], without symmetry ([`Solution::is_symmetric`] is
+    /// false: no single stick half-width, edge intensity or slip function), with the stick
+    /// set [c1, c2] ([`Solution::stick_set`]) and [`LoadPath::stick_zone`]'s estimate as
     /// [`Solution::error_estimate`], [`LoadPath::traction_error`] as
-    /// [`Solution::traction_error_estimate`], and the stresses of the field of these
-    /// tractions without symmetry. At Q = 0 its tractions and stresses are those of the
-    /// normal-load LCP solution on the same grid (to rounding). It has no single stick
-    /// half-width, edge intensity or slip function ([`Solution::is_symmetric`] is false).
+    /// [`Solution::traction_error_estimate`], and the stresses of the field of its tractions.
+    /// - The grid (method [`Method::Lcp`]): its tractions on [-1, 1] as the normal-load LCP
+    ///   solution presents its grid ([`StateProfile`]); at Q = 0 its tractions and stresses
+    ///   are those of the normal-load LCP solution on the same grid (to rounding).
+    /// - Exact (method [`Method::Coupled`], the same bases): the exact tractions at any x; the
+    ///   field from them fitted on panels graded towards every zone end.
     pub fn solution(&self) -> Solution {
-        let s = self.fine.state();
         let ((c1, c2), stick_error) = self.stick_zone();
-        let profile = StateProfile::new(self.fine.coupling(), &s.p, &s.q, stick_error);
-        Solution::asymmetric(
-            Method::Lcp,
-            profile,
-            (c1, c2),
-            stick_error,
-            self.traction_error(),
-            self.material,
-        )
+        let traction_error = self.traction_error();
+        match &self.engine {
+            Engine::Grid(g) => {
+                let s = g.fine.state();
+                let profile = StateProfile::new(g.fine.coupling(), &s.p, &s.q, stick_error);
+                Solution::asymmetric(
+                    Method::Lcp,
+                    profile,
+                    (c1, c2),
+                    stick_error,
+                    traction_error,
+                    self.material,
+                )
+            }
+            Engine::Exact(e) => Solution::asymmetric(
+                Method::Coupled,
+                exact::path::ExactProfile { path: e.clone() },
+                (c1, c2),
+                stick_error,
+                traction_error,
+                self.material,
+            ),
+        }
     }
 }
 

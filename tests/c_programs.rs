@@ -171,7 +171,7 @@ fn memcheck(exe: &Path, name: &str) {
 }
 
 /// The C test programs (tests/c/<name>.c) built and run by [`check_program`].
-const PROGRAMS: [&str; 12] = [
+const PROGRAMS: [&str; 13] = [
     "goodman_c",
     "goodman_residuals",
     "errors",
@@ -184,18 +184,22 @@ const PROGRAMS: [&str; 12] = [
     "field_errors",
     "traction_tolerance",
     "history_solution",
+    "fretting_exact",
 ];
 
 /// The programs whose valgrind run is the slow tier's ([`under_valgrind`]): each of their
 /// kinds has one under valgrind in the fast tier (residuals: spence_residuals, fields:
 /// field_errors, COUPLED: semantics and hostile); threads (31 s under valgrind on 2 loaded
-/// cores) and field_slip (60 s) are the costliest of all.
-const SLOW_MEMCHECK: [&str; 5] = [
+/// cores) and field_slip (60 s) are the costliest of all; fretting_exact runs the exact
+/// solvers (4.6 min under valgrind in quick mode, clean; fretting's grid history is the fast
+/// tier's).
+const SLOW_MEMCHECK: [&str; 6] = [
     "goodman_residuals",
     "threads",
     "coupled_residuals",
     "field_flamant",
     "field_slip",
+    "fretting_exact",
 ];
 
 /// Builds tests/c/<name>.c as C and as C++, runs the C build in full and under valgrind
@@ -314,6 +318,11 @@ fn traction_tolerance() {
 #[test]
 fn history_solution() {
     check_program("history_solution");
+}
+
+#[test]
+fn fretting_exact() {
+    check_program("fretting_exact");
 }
 
 /// Runs the hostile-input program (tests/c/hostile.c) with `draws` draws from `seed`; `full`

@@ -26,6 +26,12 @@ class CycleMethod(enum.IntEnum):
 
     LCP_HISTORY = lib.ORTHOSLIP_CYCLE_METHOD_LCP_HISTORY
     """The paper's grid LCP with a loading history (first order in panel width and step)."""
+    EXACT = lib.ORTHOSLIP_CYCLE_METHOD_EXACT
+    """The exact solvers, to the contact's ``tol`` and ``traction_tol``: for a :class:`History`
+    the normal load, monotonic loading and the branches after each reversal where they keep
+    one stick set with a slip zone at each end (other loads raise, the history unchanged);
+    :func:`solve_cycles` raises :class:`InvalidArgumentError` (the exact cycle is not built).
+    """
 
 
 class CycleState(enum.IntEnum):
@@ -108,6 +114,11 @@ class EnergyBalance(NamedTuple):
 class History:
     """A load path: the normal load of ``contact`` (its material and friction), then the
     tangential load moved monotonically by :meth:`load`, ``steps`` grid steps per call.
+    With ``method="exact"`` the exact solvers, to the contact's ``tol`` (the stick set's
+    ends) and ``traction_tol`` (the tractions), without grid (``panels`` and ``steps``
+    unused): exact p and q at any x, the zones since the current branch began; the punch
+    displacement in :attr:`state` is NaN and :attr:`dissipated_energy` raises
+    :class:`InvalidArgumentError` once Q has moved (not computed by the exact solvers).
 
     Raises:
         InvalidArgumentError: mu = 0, or panels (8 ..= 2000) or steps (2 ..= 10000) out of
@@ -126,6 +137,10 @@ class History:
         Raises:
             InvalidArgumentError: not finite, or |q_over_p| >= mu (gross sliding).
             NoAdmissibleSolutionError: the pressure turns negative (lift-off).
+            With ``method="exact"``, a load the exact solvers do not answer raises their
+            error (NoConvergenceError, NoAdmissibleSolutionError, InvalidArgumentError or
+            ToleranceNotMetError) with a message saying what is missing; the LCP history
+            answers it.
         On failure the path is unchanged."""
         check(lib.orthoslip_history_load(self._handle, q_over_p))
 

@@ -107,7 +107,7 @@ def test_bad_input_is_refused() -> None:
     with pytest.raises(InvalidArgumentError):
         k.solve_cycles(0.1, panels=7)
     with pytest.raises(ValueError, match="unknown cycle method"):
-        k.history(method="exact")
+        k.history(method="implicit")
     h = k.history(panels=8, steps=2)
     h.load(0.1)
     with pytest.raises(InvalidArgumentError, match="gross sliding"):
@@ -159,3 +159,40 @@ def test_history_solution() -> None:
                     lambda: a.slip(0.5)):
         with pytest.raises(InvalidArgumentError, match="symmetric"):
             refused()
+
+
+def test_exact_history() -> None:
+    """method="exact" at b* = 0.9, mu = 1, Q = 0.3 mu P: the grid at 50 and 100 panels
+    approaches the exact stick set's end c2; int q = Q/P by the trapezoidal rule in a graded
+    variable, the zones' friction, and the refusals (dissipation, a fretting run)."""
+    m = Material.effective(1.0, -0.8, 1.0, 1.0)
+    k = Contact(m, mu=1.0, tol=1e-10, traction_tol=1e-8)
+    h = k.history(method="exact")
+    h.load(0.3)
+    qp, u, moment = h.state
+    assert qp == 0.3 and math.isnan(u) and moment < 0.0
+    c1, c2, err = h.stick_zone
+    assert -0.95 < c1 < -0.9 and err < 1e-10
+    prev = math.inf
+    for panels in (50, 100):
+        g = k.history(panels=panels)
+        g.load(0.3)
+        d = abs(g.stick_zone[1] - c2)
+        assert d < prev
+        prev = d
+    # int q: x = -cos(t) takes out the edges' singularities (p ~ (1 -+ x)^(-g), g < 1/2)
+    t = np.linspace(0.0, math.pi, 40001)[1:-1]
+    x = -np.cos(t)
+    p, q, zone = h.tractions(x)
+    dt = t[1] - t[0]
+    assert abs(np.sum(q * np.sin(t)) * dt - 0.3) < 1e-4
+    assert abs(np.sum(p * np.sin(t)) * dt - 1.0) < 1e-4
+    assert np.all(np.abs(q[zone == 1] + p[zone == 1]) <= 1e-12 * p[zone == 1])
+    assert np.all(np.abs(q[zone == -1] - p[zone == -1]) <= 1e-12 * p[zone == -1])
+    assert np.all(np.abs(q[zone == 0]) <= p[zone == 0])
+    with pytest.raises(InvalidArgumentError, match="LCP_HISTORY"):
+        h.dissipated_energy
+    with pytest.raises(InvalidArgumentError, match="LCP_HISTORY"):
+        k.solve_cycles(0.3, method=CycleMethod.EXACT)
+    s = h.solution()
+    assert s.stick_zone == (c1, c2)

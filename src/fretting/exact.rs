@@ -16,11 +16,12 @@
 //! (g = 1/2 and the bonded exponent -1/2 coincide) and one border constant fixes c2.
 
 pub(crate) mod frame;
+pub(crate) mod path;
 pub(crate) mod reload;
 pub(crate) mod unload;
 
 #[cfg(test)]
-mod tests;
+pub(crate) mod tests;
 
 use crate::error::{Error, Result};
 use crate::numerics::roots::chord2;

@@ -286,7 +286,7 @@ static void bad_input(void)
                  ORTHOSLIP_ERROR_INVALID_ARGUMENT);
     CHECK_STATUS(orthoslip_cycle_options_set_repeat_tolerance(o, -1.0),
                  ORTHOSLIP_ERROR_INVALID_ARGUMENT);
-    CHECK_STATUS(orthoslip_cycle_options_set_method(o, (orthoslip_cycle_method)1),
+    CHECK_STATUS(orthoslip_cycle_options_set_method(o, (orthoslip_cycle_method)2),
                  ORTHOSLIP_ERROR_INVALID_ARGUMENT);
     CHECK_OK(orthoslip_cycle_options_set_method(o, ORTHOSLIP_CYCLE_METHOD_LCP_HISTORY));
     CHECK_STATUS(orthoslip_cycle_options_set_panels(NULL, 10), ORTHOSLIP_ERROR_NULL_POINTER);

@@ -22,26 +22,28 @@
 //! it is refused (NoConvergence or NoAdmissibleSolution) along the whole branch.
 
 #[cfg(test)]
-mod tests;
+pub(crate) mod tests;
+
+use std::sync::Arc;
 
 use super::unload::{Mirror, Start, Unloading, unload};
 use crate::error::{Error, Result};
 
 /// The reloading state: the unloading state of the mirrored problem, read back mirrored.
-pub(crate) struct Reloading<'a, 'b> {
-    pub(crate) mirrored: Unloading<'a, Mirror<'b>>,
+pub(crate) struct Reloading {
+    pub(crate) mirrored: Unloading<Mirror>,
 }
 
 /// The reloading state at Q/P = qp (Q**/P < qp < mu) from the state `data` (the unloaded
-/// state, seen mirrored: `Mirror { inner: &unloaded }`), b1, b2 to `tol` and the tractions
+/// state, seen mirrored: `Mirror { inner: unloaded }`), b1, b2 to `tol` and the tractions
 /// to `traction_tol` ([`unload`]'s ladder, start and admissibility check, in the mirrored
 /// frame).
-pub(crate) fn reload<'a, 'b>(
-    data: &'a Mirror<'b>,
+pub(crate) fn reload(
+    data: &Arc<Mirror>,
     qp: f64,
     tol: f64,
     traction_tol: f64,
-) -> Result<Reloading<'a, 'b>> {
+) -> Result<Reloading> {
     let (q_low, mu) = (-data.qp(), data.coupling().mu);
     if !(qp > q_low && qp < mu) {
         return Err(Error::InvalidArgument(format!(
@@ -67,7 +69,7 @@ pub(crate) fn reload<'a, 'b>(
         })
 }
 
-impl Reloading<'_, '_> {
+impl Reloading {
     /// Q/P.
     pub(crate) fn qp(&self) -> f64 {
         -self.mirrored.qp
@@ -78,35 +80,34 @@ impl Reloading<'_, '_> {
         let (a1, a2) = self.mirrored.stick_set();
         (-a2, -a1)
     }
-
-    fn as_mirror(&self) -> Mirror<'_> {
-        Mirror {
-            inner: &self.mirrored,
-        }
-    }
 }
 
 /// A reloading state as the data of the next unloading: the mirror of its mirrored state.
-impl Start for Reloading<'_, '_> {
+impl Start for Reloading {
     fn coupling(&self) -> &crate::problem::Coupling {
-        self.mirrored.coupling()
+        Start::coupling(&self.mirrored)
     }
     fn qp(&self) -> f64 {
-        self.as_mirror().qp()
+        -Start::qp(&self.mirrored)
     }
     fn kinks(&self) -> Vec<super::unload::Kink> {
-        self.as_mirror().kinks()
+        Start::kinks(&self.mirrored)
+            .into_iter()
+            .rev()
+            .map(super::unload::Kink::mirrored)
+            .collect()
     }
     fn tractions(&self, opx: f64, omx: f64) -> (f64, f64) {
-        self.as_mirror().tractions(opx, omx)
+        let (p, q) = Start::tractions(&self.mirrored, omx, opx);
+        (p, -q)
     }
     fn forcing(&self, opx: f64, omx: f64) -> f64 {
-        self.as_mirror().forcing(opx, omx)
+        Start::forcing(&self.mirrored, omx, opx)
     }
     fn path(&self) -> Vec<f64> {
-        self.as_mirror().path()
+        Start::path(&self.mirrored)
     }
     fn sign(&self) -> f64 {
-        self.as_mirror().sign()
+        -Start::sign(&self.mirrored)
     }
 }

@@ -68,7 +68,7 @@ fn jacobi_integral(a: f64, b: f64, alpha: f64, beta: f64, f: impl Fn(f64) -> f64
 /// Goodman's closed-form tractions in u = sqrt(s - c2), split at s = -c when c2 < -c
 /// (q0 = -mu p0 left of -c; right of -c the integrand is smooth plus a square root of
 /// s + c; it vanishes like sqrt(c - s) at c).
-fn t11(k: &Coupling, c2: f64) -> f64 {
+pub(crate) fn t11(k: &Coupling, c2: f64) -> f64 {
     let gs = crate::goodman::solve(k).unwrap();
     let c = gs.edge().c;
     let f = |u: f64| {

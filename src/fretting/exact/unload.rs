@@ -31,6 +31,8 @@ use super::{
     MAX_LEVEL, MAX_NEWTON, Monotonic, START_PANELS, STEP_LN_W1, W1_MIN, edge_exponent,
     edge_zone_scan,
 };
+use std::sync::Arc;
+
 use crate::error::{Error, Result};
 use crate::numerics::roots::chord2;
 use crate::problem::Coupling;
@@ -50,7 +52,7 @@ pub(crate) struct Kink {
 
 impl Kink {
     /// The kink of the mirrored state (x -> -x): the sides swap.
-    fn mirrored(self) -> Self {
+    pub(crate) fn mirrored(self) -> Self {
         Kink {
             opx: 2.0 - self.opx,
             slip_left: !self.slip_left,
@@ -63,7 +65,7 @@ impl Kink {
 /// The end state of the previous branch, the data of a branch whose stick set has stuck
 /// since that state (docs/theory_tangential.md sections 13 and 15): the loaded state for the
 /// first unloading, an unloading state for the reloading (through [`Mirror`]).
-pub(crate) trait Start {
+pub(crate) trait Start: Send + Sync {
     fn coupling(&self) -> &Coupling;
     /// Q/P at this state, in its own frame.
     fn qp(&self) -> f64;
@@ -78,6 +80,31 @@ pub(crate) trait Start {
     fn path(&self) -> Vec<f64>;
     /// +1 in the contact's frame, -1 when the state is seen mirrored ([`Mirror`]).
     fn sign(&self) -> f64;
+}
+
+/// A shared state is the state it points to.
+impl<T: Start + ?Sized> Start for Arc<T> {
+    fn coupling(&self) -> &Coupling {
+        (**self).coupling()
+    }
+    fn qp(&self) -> f64 {
+        (**self).qp()
+    }
+    fn kinks(&self) -> Vec<Kink> {
+        (**self).kinks()
+    }
+    fn tractions(&self, opx: f64, omx: f64) -> (f64, f64) {
+        (**self).tractions(opx, omx)
+    }
+    fn forcing(&self, opx: f64, omx: f64) -> f64 {
+        (**self).forcing(opx, omx)
+    }
+    fn path(&self) -> Vec<f64> {
+        (**self).path()
+    }
+    fn sign(&self) -> f64 {
+        (**self).sign()
+    }
 }
 
 /// The loaded state's kinks: c1* (edge zone left of it), -c where the loaded stick set holds
@@ -141,11 +168,11 @@ fn forcing_of(s: &Solved, bq: f64, opx: f64, omx: f64) -> f64 {
 /// A state seen mirrored, x -> -x and q -> -q (section 5): p(-x), -q(-x), and H[q](-x)
 /// (H changes sign under the reflection), so the forcing H[q] + bq p is read at -x. A branch
 /// with Q rising from it is the mirror of a branch with Q falling from the mirrored state.
-pub(crate) struct Mirror<'a> {
-    pub(crate) inner: &'a dyn Start,
+pub(crate) struct Mirror {
+    pub(crate) inner: Arc<dyn Start>,
 }
 
-impl Start for Mirror<'_> {
+impl Start for Mirror {
     fn coupling(&self) -> &Coupling {
         self.inner.coupling()
     }
@@ -180,7 +207,7 @@ impl Start for Mirror<'_> {
 /// where it equals its own data's forcing by (U2), at that data's kinks there. On (a1, a2)
 /// the forcing is read from the data (exact by (U2), where the state's own H[q] + bq p
 /// carries its residual), elsewhere from the state.
-impl<D: Start + ?Sized> Start for Unloading<'_, D> {
+impl<D: Start + ?Sized> Start for Unloading<D> {
     fn coupling(&self) -> &Coupling {
         self.loaded.coupling()
     }
@@ -448,9 +475,9 @@ pub(crate) const CHECK_FRACTIONS: [f64; 9] = [1e-8, 1e-6, 1e-4, 1e-2, 0.1, 0.3, 
 pub(crate) type Slips = Vec<(f64, f64)>;
 
 /// The unloading state with error estimates.
-pub(crate) struct Unloading<'a, D: Start + ?Sized = Monotonic> {
+pub(crate) struct Unloading<D: Start + ?Sized = Monotonic> {
     /// The state at Q* (the data: the loaded state, or a mirrored one, [`Mirror`]).
-    pub(crate) loaded: &'a D,
+    pub(crate) loaded: Arc<D>,
     pub(crate) qp: f64,
     pub(crate) level: Level,
     /// Bounds on |a1 - a1_exact| + |a2 - a2_exact| and on the traction norm (T1) from the
@@ -469,13 +496,13 @@ pub(crate) struct Unloading<'a, D: Start + ?Sized = Monotonic> {
 /// Q* and unloaded in one step each); then, for bp > 0, w2 from the first sign change of the
 /// border value at a2, sigma_0 + sigma_1, at level 1 scanning w2 = 0.3, 0.03, ... down to
 /// [`W1_MIN`] (as the loading's scan of w1).
-pub(crate) fn unload<'a, D: Start + ?Sized>(
-    m: &'a D,
+pub(crate) fn unload<D: Start + ?Sized>(
+    m: &Arc<D>,
     qp: f64,
     tol: f64,
     traction_tol: f64,
-) -> Result<Unloading<'a, D>> {
-    check_load(m, qp)?;
+) -> Result<Unloading<D>> {
+    check_load(&**m, qp)?;
     let k = m.coupling();
     let mut solves = 0;
     let wa0 = {
@@ -496,7 +523,7 @@ pub(crate) fn unload<'a, D: Start + ?Sized>(
         None
     } else {
         let at = |w2: f64| -> Result<f64> {
-            let s = unload_fixed(m, wa0, Some(w2), qp, 1)?;
+            let s = unload_fixed(&**m, wa0, Some(w2), qp, 1)?;
             Ok(s.sigma[0] + s.sigma[1])
         };
         let (found, scanned) = edge_zone_scan(0.3f64.min(0.5 * (2.0 - wa0)), at);
@@ -536,15 +563,15 @@ fn check_load<D: Start + ?Sized>(m: &D, qp: f64) -> Result<()> {
 /// of w2; the ladder from level 1 (started at prev's last level but one, it took more time
 /// than the cold start on the ply: each solve at levels 4-5 costs several at levels 1-2,
 /// section 14), and the cold start [`unload`] if that ladder does not converge.
-pub(crate) fn unload_from<'a, D: Start + ?Sized>(
-    prev: &Unloading<'a, D>,
-    before: Option<&Unloading<'a, D>>,
+pub(crate) fn unload_from<D: Start + ?Sized>(
+    prev: &Unloading<D>,
+    before: Option<&Unloading<D>>,
     qp: f64,
     tol: f64,
     traction_tol: f64,
-) -> Result<Unloading<'a, D>> {
-    let m = prev.loaded;
-    check_load(m, qp)?;
+) -> Result<Unloading<D>> {
+    let m = &prev.loaded;
+    check_load(&**m, qp)?;
     let (wa, w2) = (prev.level.wa, prev.level.w2);
     let start = match before {
         Some(b) if b.qp != prev.qp => {
@@ -569,15 +596,15 @@ pub(crate) fn unload_from<'a, D: Start + ?Sized>(
 
 /// The ladder of levels `first`, `first` + 1, ... up to [`MAX_LEVEL`] from (wa, w2), until
 /// two levels agree; the answer is checked for admissibility.
-fn ladder<'a, D: Start + ?Sized>(
-    m: &'a D,
+fn ladder<D: Start + ?Sized>(
+    m: &Arc<D>,
     qp: f64,
     tol: f64,
     traction_tol: f64,
     start: (f64, Option<f64>),
     first: usize,
     solves: usize,
-) -> Result<Unloading<'a, D>> {
+) -> Result<Unloading<D>> {
     let g = edge_exponent(m.coupling());
     let mut jac = None;
     let climbed = super::ladder(
@@ -588,13 +615,13 @@ fn ladder<'a, D: Start + ?Sized>(
         solves,
         |level, prev: Option<&Level>| {
             let (wa, w2) = prev.map_or(start, |p| (p.wa, p.w2));
-            unload_level(m, wa, w2, qp, level, tol, &mut jac)
+            unload_level(&**m, wa, w2, qp, level, tol, &mut jac)
         },
     )?;
     match climbed {
         Ok(l) => {
             let u = Unloading {
-                loaded: m,
+                loaded: m.clone(),
                 qp,
                 level: l.level,
                 c_error: l.c_error,
@@ -633,7 +660,7 @@ impl super::Rung for Level {
     }
 }
 
-impl<D: Start + ?Sized> Unloading<'_, D> {
+impl<D: Start + ?Sized> Unloading<D> {
     /// Err(NoAdmissibleSolution) when a slip zone slips against its friction ((T5); the
     /// three-zone pattern does not hold there, section 13).
     pub(crate) fn admissible(&self) -> Result<()> {

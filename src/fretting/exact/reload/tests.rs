@@ -7,6 +7,8 @@
 
 use super::super::unload::{Mirror, Start, Unloading, first_slip, unload, unload_level};
 use super::super::{contact_rule, distance, edge_exponent, monotonic, quadrature_forces};
+use std::sync::Arc;
+
 use super::*;
 use crate::Material;
 use crate::lcp::history::{History, State};
@@ -147,7 +149,7 @@ fn reloading_pattern_on_the_grid() {
 /// unloaded stick set: (Q - Q**)/P = int_{b2}^{1} (mu p0 - q**) sqrt((1 + s)/(s - b2)) ds, by
 /// Gauss-Jacobi with the weight ((1 - s)(s - b2))^(-1/2) (mu p0 - q** carries (1 - s)^(-1/2)
 /// and is analytic on the unloaded stick set); q** from the unloading solver.
-fn t15<D: Start + ?Sized>(u: &Unloading<D>, b2: f64) -> f64 {
+pub(crate) fn t15<D: Start + ?Sized>(u: &Unloading<D>, b2: f64) -> f64 {
     let mu = u.coupling().mu;
     let (t, w) = gauss_jacobi(60, -0.5, -0.5);
     t.iter()
@@ -163,7 +165,7 @@ fn t15<D: Start + ?Sized>(u: &Unloading<D>, b2: f64) -> f64 {
 }
 
 /// The root b2 of (T15) at Q/P = qp by Brent's method in the bracket `near` +- 0.01.
-fn t15_root<D: Start + ?Sized>(u: &Unloading<D>, qp: f64, near: f64) -> f64 {
+pub(crate) fn t15_root<D: Start + ?Sized>(u: &Unloading<D>, qp: f64, near: f64) -> f64 {
     let f = |b2: f64| t15(u, b2) - (qp - u.qp);
     let (a, b) = (near - 0.01, near + 0.01);
     brent(|x| Ok(f(x)), (a, f(a)), (b, f(b)), 1e-14, 100).unwrap()
@@ -220,8 +222,8 @@ fn corner_ratio(tractions: &dyn Fn(f64, f64) -> (f64, f64), end: f64) -> f64 {
 fn goodman_reloading_matches_the_closed_form() {
     let k = Coupling { bp: 0.0, ..ply() };
     let q_star = 0.18;
-    let m = monotonic(&k, q_star, 1e-11, 1e-9).unwrap();
-    let u = unload(&m, -q_star, 1e-11, 1e-9).unwrap();
+    let m = Arc::new(monotonic(&k, q_star, 1e-11, 1e-9).unwrap());
+    let u = Arc::new(unload(&m, -q_star, 1e-11, 1e-9).unwrap());
     let (a1, _) = u.stick_set();
     let corner = corner_ratio(&|o, m| u.tractions(o, m), 1.0);
     // the state at +Q* after reloading, q** + (2 Q*/P) p0 ((T15a)), against the first loaded
@@ -237,7 +239,7 @@ fn goodman_reloading_matches_the_closed_form() {
         .sum();
     println!("int |q(+Q*, reloaded) - q*| = {apart:.6e}");
     assert!((apart - 4.964e-2).abs() < 1e-4, "{apart}");
-    let mirror = Mirror { inner: &u };
+    let mirror = Arc::new(Mirror { inner: u.clone() });
     let qs = -first_slip(&mirror).unwrap();
     assert!(((qs + q_star) - (k.mu - corner)).abs() < 1e-12);
     assert!(qs > q_star, "Q_s/P = {qs} below Q*/P");
@@ -270,9 +272,9 @@ fn goodman_reloading_matches_the_closed_form() {
 fn ply_corner_is_refused() {
     let k = ply();
     let q_star = 0.18;
-    let m = monotonic(&k, q_star, 1e-10, 1e-6).unwrap();
-    let u = unload(&m, -q_star, 1e-8, 1e-5).unwrap();
-    let mirror = Mirror { inner: &u };
+    let m = Arc::new(monotonic(&k, q_star, 1e-10, 1e-6).unwrap());
+    let u = Arc::new(unload(&m, -q_star, 1e-8, 1e-5).unwrap());
+    let mirror = Arc::new(Mirror { inner: u.clone() });
     let r = reload(&mirror, q_star, 1e-5, 0.1);
     if let Err(e) = &r {
         println!("{e}");
@@ -295,18 +297,18 @@ fn ply_corner_on_the_ladder() {
     let k = ply();
     let q_star = 0.18;
     let g = edge_exponent(&k);
-    let m = monotonic(&k, q_star, 1e-10, 1e-6).unwrap();
+    let m = Arc::new(monotonic(&k, q_star, 1e-10, 1e-6).unwrap());
     // the unloaded state's traction tolerance, 1e-5 unless ORTHOSLIP_UNLOADED_TOL says
     let unloaded_tol: f64 = std::env::var("ORTHOSLIP_UNLOADED_TOL")
         .ok()
         .and_then(|s| s.parse().ok())
         .unwrap_or(1e-5);
-    let u = unload(&m, -q_star, 1e-8, unloaded_tol).unwrap();
+    let u = Arc::new(unload(&m, -q_star, 1e-8, unloaded_tol).unwrap());
     println!(
         "unloaded state: estimates {:.1e}, {:.1e}, level {}",
         u.c_error, u.traction_error, u.levels
     );
-    let mirror = Mirror { inner: &u };
+    let mirror = Arc::new(Mirror { inner: u.clone() });
     let qp = -q_star;
     let (mut wa, mut w2) = (3.5e-6, Some(1.4e-6));
     let mut jac = None;
@@ -343,7 +345,7 @@ fn ply_corner_on_the_ladder() {
     }
     let Some(level) = prev else { return };
     let r = Unloading {
-        loaded: &mirror,
+        loaded: mirror.clone(),
         qp,
         level,
         c_error: 0.0,
@@ -377,15 +379,15 @@ fn measure_reloading() {
     ] {
         let t = std::time::Instant::now();
         let loaded_tol = if k.bp == 0.0 { 1e-9 } else { 1e-6 };
-        let m = monotonic(&k, q_star, 1e-10, loaded_tol).unwrap();
-        let u = unload(&m, -q_star, tols.0, tols.1).unwrap();
+        let m = Arc::new(monotonic(&k, q_star, 1e-10, loaded_tol).unwrap());
+        let u = Arc::new(unload(&m, -q_star, tols.0, tols.1).unwrap());
         println!(
             "{name}: loaded and unloaded states {:.2} s (unloaded estimates {:.1e}, {:.1e})",
             t.elapsed().as_secs_f64(),
             u.c_error,
             u.traction_error
         );
-        let mirror = Mirror { inner: &u };
+        let mirror = Arc::new(Mirror { inner: u.clone() });
         for frac in fracs {
             let t = std::time::Instant::now();
             match reload(&mirror, frac * q_star, tols.0, tols.1) {
@@ -423,8 +425,8 @@ fn measure_reloading() {
 fn dissipation_of_the_first_cycle() {
     let q_star = 0.18;
     let goodman = Coupling { bp: 0.0, ..ply() };
-    let m = monotonic(&goodman, q_star, 1e-11, 1e-9).unwrap();
-    let u = unload(&m, -q_star, 1e-11, 1e-9).unwrap();
+    let m = Arc::new(monotonic(&goodman, q_star, 1e-11, 1e-9).unwrap());
+    let u = Arc::new(unload(&m, -q_star, 1e-11, 1e-9).unwrap());
     let before = unload(&m, -0.8 * q_star, 1e-11, 1e-9).unwrap();
     let wa = before.level.wa;
     for f in [1e-6, 0.1, 0.5, 0.9] {
@@ -464,13 +466,13 @@ fn goodman_second_unloading_matches_the_closed_form() {
     use super::super::unload::tests::t13;
     let k = Coupling { bp: 0.0, ..ply() };
     let q_star = 0.18;
-    let m = monotonic(&k, q_star, 1e-11, 1e-9).unwrap();
-    let u = unload(&m, -q_star, 1e-11, 1e-9).unwrap();
+    let m = Arc::new(monotonic(&k, q_star, 1e-11, 1e-9).unwrap());
+    let u = Arc::new(unload(&m, -q_star, 1e-11, 1e-9).unwrap());
     let (a1_un, _) = u.stick_set();
-    let mirror = Mirror { inner: &u };
+    let mirror = Arc::new(Mirror { inner: u.clone() });
     let qs = -first_slip(&mirror).unwrap();
     let q_r = qs + 0.3 * (k.mu - qs);
-    let r = reload(&mirror, q_r, 1e-11, 1e-9).unwrap();
+    let r = Arc::new(reload(&mirror, q_r, 1e-11, 1e-9).unwrap());
     let corner = corner_ratio(&|o, m| r.tractions(o, m), -1.0);
     let q_s2 = first_slip(&r).unwrap();
     assert!((q_s2 - (q_r - (k.mu + corner))).abs() < 1e-12);

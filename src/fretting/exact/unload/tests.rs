@@ -7,6 +7,8 @@
 //! section 13); the dissipation of the first unloading against the grid's (section 14).
 
 use super::super::{distance, monotonic, quadrature_forces};
+use std::sync::Arc;
+
 use super::*;
 use crate::Material;
 use crate::lcp::history::{History, Zone};
@@ -60,11 +62,11 @@ pub(crate) fn t13<D: Start + ?Sized>(m: &D, a1: f64) -> f64 {
 fn goodman_limit_matches_the_closed_form() {
     let k = Coupling { bp: 0.0, ..ply() };
     let q_star = 0.18;
-    let m = monotonic(&k, q_star, 1e-11, 1e-9).unwrap();
+    let m = Arc::new(monotonic(&k, q_star, 1e-11, 1e-9).unwrap());
     let (_, c2_star) = m.stick_set();
     for frac in [-0.6, -0.8] {
         let qp = frac * q_star;
-        let u = unload(&m, qp, 1e-11, 1e-9).unwrap();
+        let u = Arc::new(unload(&m, qp, 1e-11, 1e-9).unwrap());
         assert_eq!(u.level.w2, None);
         let (a1, a2) = u.stick_set();
         assert_eq!(a2, 1.0);
@@ -108,8 +110,8 @@ fn goodman_limit_matches_the_closed_form() {
 fn ply_matches_the_lcp_history() {
     let k = ply();
     let q_star = 0.18;
-    let m = monotonic(&k, q_star, 1e-10, 1e-6).unwrap();
-    let u = unload(&m, -q_star, 1e-8, 1e-5).unwrap();
+    let m = Arc::new(monotonic(&k, q_star, 1e-10, 1e-6).unwrap());
+    let u = Arc::new(unload(&m, -q_star, 1e-8, 1e-5).unwrap());
     let (a1, a2) = u.stick_set();
     let (g1, g2) = (
         grid(&k, 100, q_star, -q_star).state().stick,
@@ -140,8 +142,8 @@ fn ply_matches_the_lcp_history() {
 fn local_exponents_and_moment() {
     let k = ply();
     let q_star = 0.18;
-    let m = monotonic(&k, q_star, 1e-10, 1e-6).unwrap();
-    let u = unload(&m, -q_star, 1e-8, 1e-5).unwrap();
+    let m = Arc::new(monotonic(&k, q_star, 1e-10, 1e-6).unwrap());
+    let u = Arc::new(unload(&m, -q_star, 1e-8, 1e-5).unwrap());
     let g = edge_exponent(&k);
     let (a1, a2) = u.stick_set();
     let w2 = 1.0 - a2;
@@ -192,8 +194,8 @@ fn equilibrium_residuals_and_inequalities() {
         (ply(), 0.18, -0.18, 1e-6, (1e-8, 1e-5), 1e-6),
         (goodman, 0.18, -0.108, 1e-9, (1e-11, 1e-9), 1e-9),
     ] {
-        let m = monotonic(&k, q_star, 1e-10, loaded_tol).unwrap();
-        let u = unload(&m, qp, tols.0, tols.1).unwrap();
+        let m = Arc::new(monotonic(&k, q_star, 1e-10, loaded_tol).unwrap());
+        let u = Arc::new(unload(&m, qp, tols.0, tols.1).unwrap());
         let g = edge_exponent(&k);
         let s = &u.level.state;
         let (ip, iq) = quadrature_forces(g, s);
@@ -234,7 +236,7 @@ fn strong_coupling_corner_is_refused() {
         "the last step: {:?}",
         &st.zones[..8]
     );
-    let m = monotonic(&k, q_star, 1e-10, 1e-8).unwrap();
+    let m = Arc::new(monotonic(&k, q_star, 1e-10, 1e-8).unwrap());
     match unload(&m, 0.0, 1e-10, 1e-8) {
         Err(Error::NoAdmissibleSolution(msg)) => assert!(msg.contains("leading zone"), "{msg}"),
         Err(e) => panic!("refused for another reason: {e}"),
@@ -246,7 +248,7 @@ fn strong_coupling_corner_is_refused() {
 #[test]
 fn loads_outside_the_branch_are_refused() {
     let k = Coupling { bp: 0.0, ..ply() };
-    let m = monotonic(&k, 0.18, 1e-10, 1e-8).unwrap();
+    let m = Arc::new(monotonic(&k, 0.18, 1e-10, 1e-8).unwrap());
     for qp in [0.18, 0.2, -0.3, -0.5] {
         assert!(matches!(
             unload(&m, qp, 1e-10, 1e-8),
@@ -263,7 +265,7 @@ fn loads_outside_the_branch_are_refused() {
 fn lcp_sequence_on_the_ply() {
     let k = ply();
     let q_star = 0.18;
-    let m = monotonic(&k, q_star, 1e-10, 1e-6).unwrap();
+    let m = Arc::new(monotonic(&k, q_star, 1e-10, 1e-6).unwrap());
     let exact: Vec<f64> = [-0.6, -1.0]
         .iter()
         .map(|f| unload(&m, f * q_star, 1e-8, 1e-5).unwrap().stick_set().0)
@@ -316,7 +318,7 @@ fn measure_unloading() {
     ];
     for (name, k, q_star, loaded_tol, fracs, (tc, tt)) in scenes {
         let t = std::time::Instant::now();
-        let m = monotonic(&k, q_star, 1e-10, loaded_tol).unwrap();
+        let m = Arc::new(monotonic(&k, q_star, 1e-10, loaded_tol).unwrap());
         println!(
             "{name} loaded to Q*/P = {q_star}: {:.0} ms, estimates ({:.1e}, {:.1e})",
             t.elapsed().as_secs_f64() * 1e3,
@@ -349,7 +351,7 @@ fn measure_unloading() {
     }
     // bp = 0: the first-slip load Q_s = Q* - P (mu + q*/p0 at x = -1) (T13)
     let k = Coupling { bp: 0.0, ..ply() };
-    let m = monotonic(&k, 0.18, 1e-11, 1e-9).unwrap();
+    let m = Arc::new(monotonic(&k, 0.18, 1e-11, 1e-9).unwrap());
     let (p, q) = m.tractions(1e-12, 2.0 - 1e-12);
     println!(
         "bp=0: q*/p0 at -1 = {}, Q_s/P = {:?}",
@@ -365,7 +367,7 @@ fn measure_unloading() {
     }
     // the ply's first admissible load, by bisection on the refusal
     let k = ply();
-    let m = monotonic(&k, 0.18, 1e-10, 1e-6).unwrap();
+    let m = Arc::new(monotonic(&k, 0.18, 1e-10, 1e-6).unwrap());
     let (mut hi, mut lo) = (-0.3, -0.6);
     for _ in 0..6 {
         let mid = 0.5 * (hi + lo);
@@ -454,7 +456,7 @@ fn pattern_on_the_grid() {
 fn dissipation_of_the_first_unloading() {
     let k = ply();
     let q_star = 0.18;
-    let m = monotonic(&k, q_star, 1e-10, 1e-6).unwrap();
+    let m = Arc::new(monotonic(&k, q_star, 1e-10, 1e-6).unwrap());
     let t = std::time::Instant::now();
     let q0 = -0.485 * q_star;
     let n = 8;
@@ -509,7 +511,7 @@ fn warm_start_agrees_with_the_cold_start() {
         (ply(), 1e-6, (1e-8, 1e-5), [-0.8, -0.9, -1.0]),
     ] {
         let q_star = 0.18;
-        let m = monotonic(&k, q_star, 1e-10, loaded_tol).unwrap();
+        let m = Arc::new(monotonic(&k, q_star, 1e-10, loaded_tol).unwrap());
         let a = unload(&m, path[0] * q_star, tols.0, tols.1).unwrap();
         let b = unload(&m, path[1] * q_star, tols.0, tols.1).unwrap();
         let to = path[2];
@@ -539,7 +541,7 @@ fn warm_start_agrees_with_the_cold_start() {
 fn measure_warm_start() {
     let k = ply();
     let q_star = 0.18;
-    let m = monotonic(&k, q_star, 1e-10, 1e-6).unwrap();
+    let m = Arc::new(monotonic(&k, q_star, 1e-10, 1e-6).unwrap());
     let q0 = -0.485 * q_star;
     let loads: Vec<f64> = (0..=8)
         .map(|j| q0 + (-q_star - q0) * j as f64 / 8.0)

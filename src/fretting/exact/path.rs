@@ -1,0 +1,419 @@
+//! A load path on the exact solvers (`CycleMethod::Exact`): the normal-load state, the
+//! monotonic loading from it ([`super::monotonic`], either sign of Q by mirror symmetry), and
+//! each reversal of the load direction as a new branch whose data is the state where it
+//! reversed ([`super::unload::unload`]; a branch with Q rising is the unloading of the
+//! mirrored state, docs/theory_tangential.md sections 5 and 15). Continuing in the same
+//! direction re-solves the same branch at the new load (each branch is path-independent
+//! from its data, sections 10 and 13).
+//!
+//! Every state is held in a frame of its own, the contact's or its mirror (x -> -x,
+//! q -> -q); [`ExactPath`]'s getters read it in the contact's frame.
+
+use std::sync::Arc;
+
+use super::frame::Solved;
+use super::unload::{Mirror, Start, Unloading, unload, unload_from};
+use super::{Monotonic, edge_exponent, monotonic, normal_load};
+use crate::error::{Error, Result};
+use crate::problem::{Coupling, Profile};
+
+/// Where the exact solvers stop answering, for the messages of refused loads.
+const COVERAGE: &str = "the exact solver covers the normal load, monotonic loading from \
+    Q = 0 and the unloading and reloading branches where they keep one stick set with a slip \
+    zone at each end; the corner structure that the ply's unloading above about -0.48 Q* \
+    and its reloading need (and strong coupling's unloading) is not built yet \
+    (docs/theory_tangential.md sections 13 and 15). CycleMethod::LcpHistory \
+    (ORTHOSLIP_CYCLE_METHOD_LCP_HISTORY) answers every load path";
+
+/// The loaded state is the data of the unloading after a reversal, and is solved to at
+/// least these tolerances (c1 + c2, and the tractions in the norm (T1)): on the ply the
+/// unloading's ladder converges from a loaded state solved to (1e-10, 1e-6), not from one
+/// solved to (1e-8, 1e-5) (its tractions' levels stayed 4e-2 apart at -Q*, Q* = 0.6 mu P).
+const DATA_TOL: f64 = 1e-10;
+const DATA_TRACTION_TOL: f64 = 1e-6;
+
+/// The state on the path.
+#[derive(Clone)]
+pub(crate) enum Branch {
+    /// The normal load (Q = 0).
+    Normal,
+    /// Monotonic loading from the normal load; the state is `m` mirrored when `flip` (Q < 0).
+    Loading { m: Arc<Monotonic>, flip: bool },
+    /// A branch from the state where the load last reversed, in a frame where its Q
+    /// decreases (the contact's mirrored when `flip`); `data_c_error` and
+    /// `data_traction_error` are the estimates of that state.
+    Unloading {
+        u: Arc<Unloading<dyn Start>>,
+        flip: bool,
+        data_c_error: f64,
+        data_traction_error: f64,
+    },
+}
+
+/// The normal-load state on the exact solvers' frame, with COUPLED's estimates.
+pub(crate) struct Normal {
+    pub(crate) c: f64,
+    pub(crate) state: Solved,
+    pub(crate) c_error: f64,
+    pub(crate) traction_error: f64,
+}
+
+/// An exact load path: the normal-load state and the current branch.
+#[derive(Clone)]
+pub(crate) struct ExactPath {
+    pub(crate) k: Coupling,
+    tol: f64,
+    traction_tol: f64,
+    pub(crate) normal: Arc<Normal>,
+    pub(crate) branch: Branch,
+}
+
+/// The error `e` of the exact solver on `what`, with what the exact path covers.
+fn refused(what: &str, e: Error) -> Error {
+    let say = |m: String| {
+        format!(
+            "CycleMethod::Exact (ORTHOSLIP_CYCLE_METHOD_EXACT): {what} is not answered ({m}); \
+             {COVERAGE}"
+        )
+    };
+    match e {
+        Error::InvalidArgument(m) => Error::InvalidArgument(say(m)),
+        Error::NoConvergence(m) => Error::NoConvergence(say(m)),
+        Error::NoAdmissibleSolution(m) => Error::NoAdmissibleSolution(say(m)),
+        Error::ToleranceNotMet {
+            estimate,
+            tolerance,
+            detail,
+        } => Error::ToleranceNotMet {
+            estimate,
+            tolerance,
+            detail: say(detail),
+        },
+        other => other,
+    }
+}
+
+impl ExactPath {
+    /// The normal-load state of `k`: COUPLED's stick half-width (to 1e-13) and its state on
+    /// the exact frame; later loads solved to `tol` (c1, c2) and `traction_tol` (tractions,
+    /// norm (T1)).
+    pub(crate) fn new(k: &Coupling, tol: f64, traction_tol: f64) -> Result<Self> {
+        let cs =
+            crate::coupled::solve_to(k, 1e-13, 1e-12).map_err(|e| refused("the normal load", e))?;
+        let e = cs.edge();
+        let state =
+            normal_load(k, e.c, e.one_minus_c, 3).map_err(|e| refused("the normal load", e))?;
+        Ok(Self {
+            k: *k,
+            tol,
+            traction_tol,
+            normal: Arc::new(Normal {
+                c: e.c,
+                state,
+                c_error: cs.numerical_error(),
+                traction_error: cs.traction_error(),
+            }),
+            branch: Branch::Normal,
+        })
+    }
+
+    /// The current Q/P.
+    pub(crate) fn q_over_p(&self) -> f64 {
+        match &self.branch {
+            Branch::Normal => 0.0,
+            Branch::Loading { m, flip } => sign(*flip) * m.qp,
+            Branch::Unloading { u, flip, .. } => sign(*flip) * u.qp,
+        }
+    }
+
+    /// Whether the state is the normal load.
+    pub(crate) fn is_normal(&self) -> bool {
+        matches!(self.branch, Branch::Normal)
+    }
+
+    /// Moves Q/P monotonically from its current value to `qp` (checked by the caller:
+    /// finite, |qp| < mu). On error the path is unchanged.
+    pub(crate) fn load(&mut self, qp: f64) -> Result<()> {
+        let now = self.q_over_p();
+        if qp == now {
+            return Ok(());
+        }
+        let what = format!("the load step Q/P = {now} -> {qp}");
+        let (tol, ttol) = (self.tol, self.traction_tol);
+        let next = match &self.branch {
+            Branch::Normal => Branch::Loading {
+                m: Arc::new(
+                    monotonic(
+                        &self.k,
+                        qp.abs(),
+                        tol.min(DATA_TOL),
+                        ttol.min(DATA_TRACTION_TOL),
+                    )
+                    .map_err(|e| refused(&what, e))?,
+                ),
+                flip: qp < 0.0,
+            },
+            Branch::Loading { m, flip } => {
+                let t = sign(*flip) * qp;
+                if t > m.qp {
+                    Branch::Loading {
+                        m: Arc::new(
+                            monotonic(&self.k, t, tol.min(DATA_TOL), ttol.min(DATA_TRACTION_TOL))
+                                .map_err(|e| refused(&what, e))?,
+                        ),
+                        flip: *flip,
+                    }
+                } else {
+                    let data: Arc<dyn Start> = m.clone();
+                    Branch::Unloading {
+                        u: Arc::new(unload(&data, t, tol, ttol).map_err(|e| refused(&what, e))?),
+                        flip: *flip,
+                        data_c_error: m.c_error,
+                        data_traction_error: m.traction_error,
+                    }
+                }
+            }
+            Branch::Unloading {
+                u,
+                flip,
+                data_c_error,
+                data_traction_error,
+            } => {
+                let t = sign(*flip) * qp;
+                if t < u.qp {
+                    Branch::Unloading {
+                        u: Arc::new(
+                            unload_from(u, None, t, tol, ttol).map_err(|e| refused(&what, e))?,
+                        ),
+                        flip: *flip,
+                        data_c_error: *data_c_error,
+                        data_traction_error: *data_traction_error,
+                    }
+                } else {
+                    let inner: Arc<dyn Start> = u.clone();
+                    let data: Arc<dyn Start> = Arc::new(Mirror { inner });
+                    Branch::Unloading {
+                        u: Arc::new(unload(&data, -t, tol, ttol).map_err(|e| refused(&what, e))?),
+                        flip: !*flip,
+                        data_c_error: u.c_error + data_c_error,
+                        data_traction_error: u.traction_error + data_traction_error,
+                    }
+                }
+            }
+        };
+        self.branch = next;
+        Ok(())
+    }
+
+    /// (p, q) at x given by (1 + x, 1 - x), in the contact's frame.
+    pub(crate) fn tractions(&self, opx: f64, omx: f64) -> (f64, f64) {
+        let own = |o: f64, m: f64| match &self.branch {
+            Branch::Normal => self.normal.state.tractions(o, m),
+            Branch::Loading { m: s, .. } => s.tractions(o, m),
+            Branch::Unloading { u, .. } => u.tractions(o, m),
+        };
+        if self.flipped() {
+            let (p, q) = own(omx, opx);
+            (p, -q)
+        } else {
+            own(opx, omx)
+        }
+    }
+
+    fn flipped(&self) -> bool {
+        match &self.branch {
+            Branch::Normal => false,
+            Branch::Loading { flip, .. } | Branch::Unloading { flip, .. } => *flip,
+        }
+    }
+
+    /// The stick set [c1, c2] in the contact's frame.
+    pub(crate) fn stick_set(&self) -> (f64, f64) {
+        let (a, b) = match &self.branch {
+            Branch::Normal => (-self.normal.c, self.normal.c),
+            Branch::Loading { m, .. } => {
+                let (w1, c2) = m.stick_set();
+                (w1 - 1.0, c2)
+            }
+            Branch::Unloading { u, .. } => u.stick_set(),
+        };
+        if self.flipped() { (-b, -a) } else { (a, b) }
+    }
+
+    /// The estimates of |c1 - c1_exact| + |c2 - c2_exact| and of the tractions in the norm
+    /// (T1): the ladder's of this state, plus those of the state its branch started from
+    /// (held fixed in the ladder; how they carry over is not measured).
+    pub(crate) fn estimates(&self) -> (f64, f64) {
+        match &self.branch {
+            Branch::Normal => (self.normal.c_error, self.normal.traction_error),
+            Branch::Loading { m, .. } => (m.c_error, m.traction_error),
+            Branch::Unloading {
+                u,
+                data_c_error,
+                data_traction_error,
+                ..
+            } => (
+                u.c_error + data_c_error,
+                u.traction_error + data_traction_error,
+            ),
+        }
+    }
+
+    /// int x p dx (per P a) in the contact's frame.
+    pub(crate) fn moment(&self) -> f64 {
+        let own = match &self.branch {
+            Branch::Normal => super::moment(edge_exponent(&self.k), &self.normal.state),
+            Branch::Loading { m, .. } => m.moment(),
+            Branch::Unloading { u, .. } => u.moment(),
+        };
+        if self.flipped() { -own } else { own }
+    }
+
+    /// The zone ends of the current state as (1 + x, 1 - x), increasing in x, both contact
+    /// ends included, in the contact's frame.
+    pub(crate) fn breakpoints(&self) -> Vec<(f64, f64)> {
+        let s = match &self.branch {
+            Branch::Normal => &self.normal.state,
+            Branch::Loading { m, .. } => &m.level.state,
+            Branch::Unloading { u, .. } => &u.level.state,
+        };
+        let f = &s.frame;
+        let n = f.zone_count();
+        let mut out = vec![(0.0, 2.0)];
+        let mut acc = 0.0;
+        for i in 0..n {
+            acc += f.zone_len(i);
+            let omx: f64 = (i + 1..n).map(|j| f.zone_len(j)).sum();
+            out.push(if i + 1 == n { (2.0, 0.0) } else { (acc, omx) });
+        }
+        if self.flipped() {
+            out = out.into_iter().rev().map(|(o, m)| (m, o)).collect();
+        }
+        out
+    }
+}
+
+/// A load-path state as a [`Profile`]: its tractions in the contact's frame at any x.
+#[derive(Clone)]
+pub(crate) struct ExactProfile {
+    pub(crate) path: ExactPath,
+}
+
+impl std::fmt::Debug for ExactProfile {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("ExactProfile")
+            .field("q_over_p", &self.path.q_over_p())
+            .field("stick_set", &self.path.stick_set())
+            .finish()
+    }
+}
+
+impl Profile for ExactProfile {
+    fn coupling(&self) -> Coupling {
+        self.path.k
+    }
+    /// No single stick half-width: NaN (the stick set is the solution's).
+    fn edge(&self) -> crate::problem::StickEdge {
+        crate::problem::StickEdge {
+            c: f64::NAN,
+            one_minus_c: f64::NAN,
+        }
+    }
+    fn numerical_error(&self) -> f64 {
+        self.path.estimates().0
+    }
+    fn traction_error(&self) -> f64 {
+        self.path.estimates().1
+    }
+    fn half_line_tractions(&self, x: f64) -> (f64, f64) {
+        self.tractions(x)
+    }
+    /// (p, q) at any x (not NaN): zero outside the punch, p = +infinity at x = +-1 with q
+    /// infinite of the sign of q next to that edge (0 where q vanishes there).
+    fn tractions(&self, x: f64) -> (f64, f64) {
+        let ax = x.abs();
+        if ax > 1.0 {
+            return (0.0, 0.0);
+        }
+        if ax == 1.0 {
+            let d = 1e-12;
+            let (_, q) = if x < 0.0 {
+                self.path.tractions(d, 2.0 - d)
+            } else {
+                self.path.tractions(2.0 - d, d)
+            };
+            let q = if q == 0.0 {
+                0.0
+            } else {
+                f64::INFINITY.copysign(q)
+            };
+            return (f64::INFINITY, q);
+        }
+        self.path.tractions(1.0 + x, 1.0 - x)
+    }
+}
+
+/// Grading of the expansion's panels towards every zone end: ratio and levels (the
+/// innermost panel 0.2^14 = 1.6e-10 of the half zone).
+const GRADING: f64 = 0.2;
+const GRADED_LEVELS: usize = 14;
+
+/// Each zone cut into panels graded geometrically towards both its ends, fitted in Legendre
+/// series ([`crate::field::fitted_panel`]); the panels at the contact's ends weighted
+/// (1 + t)^(-g) and (1 - t)^(-g).
+impl crate::field::Expand for ExactProfile {
+    fn expansion(&self) -> crate::field::Expansion {
+        use crate::numerics::cauchy::Weight;
+        let g = edge_exponent(&self.path.k);
+        let mut panels = Vec::new();
+        for w in self.path.breakpoints().windows(2) {
+            let ((oa, ma), (ob, mb)) = (w[0], w[1]);
+            let len = if oa < mb { ob - oa } else { ma - mb };
+            if len <= 0.0 {
+                continue;
+            }
+            // panel ends as offsets s from the zone's left end, increasing
+            let half = 0.5 * len;
+            let mut cuts = vec![0.0];
+            for j in (1..=GRADED_LEVELS).rev() {
+                cuts.push(half * GRADING.powi(j as i32));
+            }
+            cuts.push(half);
+            for j in 1..=GRADED_LEVELS {
+                cuts.push(len - half * GRADING.powi(j as i32));
+            }
+            cuts.push(len);
+            for c in cuts.windows(2) {
+                let (s0, s1) = (c[0], c[1]);
+                let h = 0.5 * (s1 - s0);
+                // offsets of the panel's ends from the contact's ends, each from its nearer
+                // zone end
+                let (o0, m1) = (oa + s0, mb + (len - s1));
+                let weight = if oa == 0.0 && s0 == 0.0 {
+                    Weight::Left(-g)
+                } else if mb == 0.0 && s1 == len {
+                    Weight::Right(-g)
+                } else {
+                    Weight::One
+                };
+                let (a, b) = (o0 - 1.0, 1.0 - m1);
+                panels.push(crate::field::fitted_panel(a, b, weight, |omt, opt| {
+                    self.path.tractions(o0 + h * opt, m1 + h * omt)
+                }));
+            }
+        }
+        crate::field::Expansion { panels }
+    }
+
+    /// The two edges differ: none.
+    fn edge_intensity(&self, _: &crate::field::Expansion) -> Option<(f64, f64)> {
+        None
+    }
+}
+
+fn sign(flip: bool) -> f64 {
+    if flip { -1.0 } else { 1.0 }
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,130 @@
+//! The exact load path against independent references: the bp = 0 closed forms (T11),
+//! (T13), (T15) by quadrature of their integrals and secant or Brent roots, mirror symmetry,
+//! and the unchanged-on-failure contract. Its comparison with the grid LCP history under
+//! refinement is in `crate::fretting::tests`.
+
+use super::super::reload::tests::{t15, t15_root};
+use super::super::tests::t11;
+use super::super::unload::tests::t13;
+use super::*;
+use crate::Material;
+
+fn goodman() -> Coupling {
+    let k = Material::plane_stress(181e9, 10.3e9, 7.17e9, 0.28)
+        .unwrap()
+        .coupling(0.3);
+    Coupling { bp: 0.0, ..k }
+}
+
+/// The secant method's root of f from a and b.
+fn secant(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64 {
+    let (mut fa, mut fb) = (f(a), f(b));
+    for _ in 0..40 {
+        if fb == fa || (b - a).abs() < 1e-14 {
+            break;
+        }
+        let next = b - fb * (b - a) / (fb - fa);
+        (a, fa) = (b, fb);
+        b = next;
+        fb = f(b);
+    }
+    b
+}
+
+/// Everything the path reports of its state, bit for bit.
+fn snapshot(p: &ExactPath) -> Vec<u64> {
+    let mut v = vec![p.q_over_p(), p.moment(), p.estimates().0, p.estimates().1];
+    let (a, b) = p.stick_set();
+    v.extend([a, b]);
+    for x in [-0.99, -0.5, 0.0, 0.3, 0.97] {
+        let (p, q) = p.tractions(1.0 + x, 1.0 - x);
+        v.extend([p, q]);
+    }
+    v.into_iter().map(f64::to_bits).collect()
+}
+
+/// bp = 0 along 0 -> Q* -> -0.6 Q* -> -0.8 Q* -> -Q* -> Q_r (past the reloading's first slip): the stick set's
+/// moving end is the root of (T11), (T13) and (T15) in turn; a load the exact solvers do not
+/// answer (the unloading's full-stick range above its first slip, (T13a)) is refused with
+/// InvalidArgument and leaves the path as it was.
+#[test]
+fn goodman_path_matches_the_closed_forms() {
+    let k = goodman();
+    let q_star = 0.18;
+    let mut path = ExactPath::new(&k, 1e-11, 1e-9).unwrap();
+    assert_eq!(path.stick_set().0, -path.normal.c);
+    path.load(q_star).unwrap();
+    let (c1, c2) = path.stick_set();
+    let root = secant(|c2| t11(&k, c2) - q_star, c2 - 1e-3, c2 + 1e-3);
+    assert_eq!(c1, -1.0);
+    assert!((c2 - root).abs() < 1e-9, "c2 = {c2} against (T11)'s {root}");
+    let Branch::Loading { m, .. } = &path.branch else {
+        panic!("not loading")
+    };
+    let m = m.clone();
+    // above the first slip the unloading sticks fully, which the exact path does not carry
+    let before = snapshot(&path);
+    match path.load(0.0) {
+        Err(Error::InvalidArgument(msg)) => {
+            assert!(
+                msg.contains("CycleMethod::Exact") && msg.contains("LcpHistory"),
+                "{msg}"
+            )
+        }
+        other => panic!("unloading to 0 at bp = 0: {:?}", other.map(|_| ())),
+    }
+    assert_eq!(snapshot(&path), before, "a refused load changed the path");
+    // the unloading, in steps that continue the branch ((T13)'s quadrature needs the loaded
+    // state's kink c2* outside (-1, a1): at -0.6 Q* and -0.8 Q*, not at -Q*)
+    for frac in [-0.6, -0.8] {
+        let qp = frac * q_star;
+        path.load(qp).unwrap();
+        let (a1, a2) = path.stick_set();
+        let root = secant(|a| t13(&*m, a) - (q_star - qp), a1 - 0.01, a1 + 0.01);
+        assert_eq!(a2, 1.0);
+        assert!(
+            (a1 - root).abs() < 1e-9,
+            "Q/Q* = {frac}: a1 = {a1} against (T13)'s {root}"
+        );
+    }
+    path.load(-q_star).unwrap();
+    // the reloading from -Q*, past its first slip (T15a): b2 is (T15)'s root
+    let Branch::Unloading { u, .. } = &path.branch else {
+        panic!("not unloading")
+    };
+    let u = u.clone();
+    let (_, q) = u.tractions(2.0 - 1e-12, 1e-12);
+    let p0 = 1.0 / (std::f64::consts::PI * (1e-12f64 * (2.0 - 1e-12)).sqrt());
+    let q_s = u.qp + (k.mu - q / p0);
+    let q_r = q_s + 0.3 * (k.mu - q_s);
+    path.load(q_r).unwrap();
+    let (b1, b2) = path.stick_set();
+    let root = t15_root(&*u, q_r, b2);
+    assert!(
+        b1 == -1.0 && (b2 - root).abs() < 1e-9,
+        "reloaded to {q_r}: ({b1}, {b2}) against (T15)'s b2 = {root} ({:e} there)",
+        t15(&*u, root) - (q_r - u.qp)
+    );
+    assert!((path.q_over_p() - q_r).abs() == 0.0);
+    let (ce, te) = path.estimates();
+    assert!(ce < 1e-9 && te < 1e-8, "estimates {ce:e}, {te:e}");
+}
+
+/// Q < 0 from the normal load is the mirror of Q > 0 (docs/theory_tangential.md section 5):
+/// stick set [-c2, -c1], p(-x), -q(-x), the moment's sign turned.
+#[test]
+fn negative_loading_is_the_mirror() {
+    let k = goodman();
+    let mut up = ExactPath::new(&k, 1e-10, 1e-8).unwrap();
+    let mut down = up.clone();
+    up.load(0.1).unwrap();
+    down.load(-0.1).unwrap();
+    let ((a1, a2), (b1, b2)) = (up.stick_set(), down.stick_set());
+    assert_eq!((b1, b2), (-a2, -a1));
+    assert_eq!(down.moment(), -up.moment());
+    for x in [-0.9, -0.2, 0.05, 0.6] {
+        let (p, q) = up.tractions(1.0 + x, 1.0 - x);
+        let (pm, qm) = down.tractions(1.0 - x, 1.0 + x);
+        assert!((p - pm).abs() == 0.0 && (q + qm).abs() == 0.0, "x = {x}");
+    }
+}
