@@ -64,6 +64,18 @@ impl Point {
         }
     }
 
+    /// z - y for a point z outside [-1, 1] (self), from the offsets at z's end: (1 - y) - (1 - z)
+    /// for z > 1, (1 + z) - (1 + y) for z < -1. Each offset is exact to rounding, so the
+    /// difference is too where z and y lie near the same end (y - z computed from the rounded
+    /// y values loses eps / |z - y| of it: 2e-3 at |z - y| = 1e-13).
+    pub(crate) fn minus(self, y: Point) -> f64 {
+        if self.y > 0.0 {
+            y.omy - self.omy
+        } else {
+            self.opy - y.opy
+        }
+    }
+
     /// Whether the point lies inside (-1, 1).
     pub(crate) fn inside(self) -> bool {
         self.omy > 0.0 && self.opy > 0.0
@@ -290,7 +302,7 @@ impl JacobiFamily {
 /// The transform at y of w(t) / (z - t), z outside [-1, 1], from the family's T_0 at y and at
 /// z (J6).
 pub(crate) fn pole_transform(t0_y: f64, y: Point, z: Point, t0_z: f64) -> f64 {
-    (t0_y - t0_z) / (z.y - y.y)
+    (t0_y - t0_z) / z.minus(y)
 }
 
 /// x^e for x >= 0, with 0^0 = 1.
@@ -514,6 +526,29 @@ mod tests {
             let fam = JacobiFamily::new(a, b, 1);
             let (l, r) = (fam.t0(Point::new(-1e-15)), fam.t0(Point::new(1e-15)));
             assert!((l - r).abs() < 1e-13, "({a}, {b}): {l} vs {r}");
+        }
+    }
+
+    /// z - y from the offsets to full relative accuracy where z and y lie next to the same
+    /// end: a stick point 1e-13 inside x = 1 and a pole 1e-14 beyond it (in rounded y values
+    /// the difference 1.1e-13 keeps two digits).
+    #[test]
+    fn pole_distance_from_the_offsets() {
+        for (d, e) in [(1e-13, 1e-14), (3e-16, 7e-17), (0.25, 1e-9)] {
+            for end in [1.0, -1.0] {
+                let (y, z) = (Point::offsets(d, 2.0 - d), Point::offsets(-e, 2.0 + e));
+                let (y, z) = if end > 0.0 {
+                    (y, z)
+                } else {
+                    (y.reflected(), z.reflected())
+                };
+                let exact = end * (d + e);
+                let got = z.minus(y);
+                assert!(
+                    (got - exact).abs() <= 4.0 * f64::EPSILON * exact.abs(),
+                    "d = {d}, e = {e}, end {end}: {got:e} vs {exact:e}"
+                );
+            }
         }
     }
 

@@ -165,16 +165,16 @@ impl Block {
         }
         let m = self.degrees.len();
         for (o, (z, _, _)) in out[m..].iter_mut().zip(&self.poles) {
-            *o = w * self.pole(z.y, y.y);
+            *o = w * self.pole(*z, y);
         }
     }
 
-    /// 1 / (Z - y) with its pair.
-    fn pole(&self, z: f64, y: f64) -> f64 {
+    /// 1 / (Z - y) with its pair, Z - y and Z + y from the offsets ([`Point::minus`]).
+    fn pole(&self, z: Point, y: Point) -> f64 {
         if self.pair == 0.0 {
-            1.0 / (z - y)
+            1.0 / z.minus(y)
         } else {
-            1.0 / (z - y) + self.pair / (z + y)
+            1.0 / z.minus(y) + self.pair / z.minus(y.reflected())
         }
     }
 

@@ -46,24 +46,31 @@ use system::{Fixed, Sizes, solve_fixed, solve_fixed_pair};
 /// the slip zone's quotient family does not move that floor (section 7 names the candidates).
 const G_MIN: f64 = 0.002;
 
-/// Thinnest slip zone the bases serve: with the bonded columns ((X1), below 1 - c = 1e-2),
-/// on a grid of b* = 0.02 .. 0.23 (8 rows) and mu~ = 1e-4 1.6^j (the 66 points the panels
-/// answer with 1e-10 <= 1 - c <= 1e-2), every answer agreed with the panels (c and tractions
-/// within the sum of both estimates) down to 1 - c = 7.8e-9; from 3.0e-9 down no point
-/// answered (the levels' sigma noise, some 1e-8, moves the root by more than the tractions
-/// allow), nor did 4 points of b* = 0.23 with 1 - c = 2.8e-8 .. 4.2e-8 and g = 0.04 .. 0.1
-/// (each gave up after 0.1-0.2 s; the panels took 1 s). Thinner slip zones go to the
-/// panels (docs/theory_spectral.md section 6).
-const W_MIN: f64 = 5e-9;
-
-/// Slip zones thinner than W_THIN are served only where g >= G_THIN. On the grid of
-/// [`W_MIN`], the slip zones of 5e-9 .. 5e-6 answered at g = 0.16 .. 0.50 (15 points) and
-/// not at g = 0.042 .. 0.105 (3 points, b* = 0.23); on the 24 x 24 grid of the table's
-/// coordinates, 1 - c = 4.1e-6 at g = 0.061 (b* = 0.2961, mu~ = 17.5) did not answer either:
-/// its residual (R1) stayed at 1e-8 .. 3.5e-8 over levels 2-6 (small g, (B5)). W_THIN is the
-/// limit of phase one.
-const W_THIN: f64 = 5e-6;
-const G_THIN: f64 = 0.15;
+/// Thinnest slip zone the bases serve. With the stick poles' offsets exact (Z - tau from the
+/// points' offsets, `numerics::jacobi_transform::Point::minus`) and the nearest stick pole at
+/// 0.03 (1 - c) (`system::BONDED_NEAREST`), measured from Spence's start at c to 1e-10 and
+/// tractions to 1e-8 against the panels (docs/theory_spectral.md section 6), every answer
+/// within the sum of both estimates (largest ratio 0.25 in c, 0.24 in the tractions):
+///
+/// | b* | mu~ | g | 1 - c | level | spectral | panels |
+/// |---|---|---|---|---|---|---|
+/// | 0.02 | 0.2 | 0.499 | 2.8e-13 | 2 | 42 ms | 2.9 s |
+/// | 0.1 | 1.5 | 0.453 | 3.7e-13 | 3 | 115 ms | 4.2 s |
+/// | 0.15 | 10 | 0.187 | 8.3e-13 | 3 | 119 ms | 4.7 s |
+/// | 0.05 | 0.5 | 0.492 | 1.9e-12 | 2 | 70 ms | 3.0 s |
+/// | 0.12 | 2 | 0.425 | 2.7e-12 | 3 | 91 ms | 3.1 s |
+/// | 0.15 | 4 | 0.328 | 1.2e-11 | 3 | 119 ms | 3.3 s |
+/// | 0.1 | 1 | 0.468 | 1.8e-10 | 3 | 100 ms | 0.93 s |
+/// | 0.05 | 0.4 | 0.494 | 3.4e-10 | 2 | 46 ms | 0.87 s |
+/// | 0.02 | 0.15 | 0.499 | 5.6e-10 | 2 | 52 ms | 1.3 s |
+/// | 0.15 | 2 | 0.407 | 9.5e-10 | 2 | 76 ms | 0.87 s |
+/// | 0.2 | 50 | 0.032 | 1.0e-9 | 3 | 46 ms | 0.78 s |
+/// | 0.2 | 10 | 0.148 | 2.2e-9 | 3 | 47 ms | 0.74 s |
+///
+/// (one run each, wall times on the shared 2-core machine). Before, the rounded Z - tau
+/// put a noise of eps / (0.1 (1 - c)) into the stick poles' columns and no slip zone of
+/// 3e-9 or less answered. Below the thinnest measured the panels answer.
+const W_MIN: f64 = 2.5e-13;
 
 /// Below g = [`G_WIDE`] (the first phase's limit of g) the bases serve slip zones of
 /// 1 - c >= W_SMALL_G only. On the 53 x 53 grid of the table's coordinates
@@ -74,7 +81,11 @@ const G_THIN: f64 = 0.15;
 /// did not answer either), while the 9 points of b* = 0.35 with 1 - c = 4.3e-5 .. 4.9e-5 and
 /// g = 0.002 .. 0.03 of `coupled::tests::small_g_against_the_panels` did. Thin slip zones at
 /// small g are left to the panels: 1e-3 is [`CONFIRM_BELOW`], below which the ladder needs
-/// the next level's confirmation.
+/// the next level's confirmation. Above g = 0.03 thin slip zones are served down to
+/// [`W_MIN`]: g = 0.032 .. 0.148 at 1 - c = 1e-9 .. 2.7e-7 answered and agreed with the panels
+/// (b* = 0.2 .. 0.25, 6 points, docs/theory_spectral.md section 6), and the 24 x 24 grid of
+/// the table's coordinates (`spectral::tests::agrees_with_the_table_on_a_fine_grid`)
+/// answered all 190 points it serves.
 const G_WIDE: f64 = 0.03;
 const W_SMALL_G: f64 = 1e-3;
 
@@ -172,15 +183,14 @@ fn sigma_at(k: Constants, lc: f64, sizes: Sizes) -> Option<Level> {
 }
 
 /// Whether the bases serve the coupling near the stick edge lc: g >= [`G_MIN`],
-/// b* <= [`B_MAX`], c >= [`C_MIN`] and 1 - c >= [`W_MIN`], g >= [`G_THIN`] below
-/// 1 - c = [`W_THIN`], and g >= [`G_WIDE`] below 1 - c = [`W_SMALL_G`].
+/// b* <= [`B_MAX`], c >= [`C_MIN`] and 1 - c >= [`W_MIN`], and g >= [`G_WIDE`] below
+/// 1 - c = [`W_SMALL_G`].
 fn serves(k: Constants, lc: f64) -> bool {
     let e = StickEdge::from_logit(lc);
     k.g >= G_MIN
         && k.b <= B_MAX
         && e.c >= C_MIN
         && e.one_minus_c >= W_MIN
-        && (e.one_minus_c >= W_THIN || k.g >= G_THIN)
         && (e.one_minus_c >= W_SMALL_G || k.g >= G_WIDE)
 }
 
@@ -231,9 +241,11 @@ const GUESS_B_MIN: f64 = 0.02;
 
 /// Most level-1 steps of [`from_guess`]: from Spence's stick edge at the 6 scenes of
 /// `coupled::tests::spectral_agrees_with_the_panels_from_the_table_below` (b* = 0.02 .. 0.24,
-/// c = 4.4e-5 .. 1 - 1.2e-4) the search took 2-4 before level 1's rounding stopped it; more
-/// means it is not converging and the panels answer.
-const GUESS_STEPS: usize = 10;
+/// c = 4.4e-5 .. 1 - 1.2e-4) the search took 2-4 before level 1's rounding stopped it; from
+/// Spence's 1 - c = 6e-6 at b* = 0.15, mu~ = 10 (1 - c = 8.3e-13, 15.8 away in lc) it took 11,
+/// the first 8 of them [`GUESS_MAX_STEP`] long. More means it is not converging and the
+/// panels answer.
+const GUESS_STEPS: usize = 20;
 
 /// Largest level-1 step in lc of [`from_guess`], a safeguard: the first steps from Spence's c
 /// were 4e-5 .. 1.2e-2 in lc at the five scenes traced (b* = 0.005 and 0.1, c = 0.04 .. 0.8);
@@ -680,9 +692,8 @@ fn distance(a: &Fixed, b: &Fixed, rules: &Rules) -> (f64, f64) {
     }
     let (s, ws) = &rules.jacobi;
     for (&s, &ws) in s.iter().zip(ws) {
-        let x = c + 0.5 * w * (1.0 + s);
         let weight = (1.0 - s).powf(-g);
-        let ((pa, qa), (pb, qb)) = a.at_both(b, x);
+        let ((pa, qa), (pb, qb)) = a.at_both_slip(b, 0.5 * w * (1.0 - s));
         dp += 0.5 * w * ws * (pa - pb).abs() / weight;
         dq += 0.5 * w * ws * (qa - qb).abs() / weight;
     }
@@ -759,16 +770,16 @@ fn admissible(f: &Fixed, mu: f64) -> Option<f64> {
     let mut noise = 0.0f64;
     for i in 0..CHECK_POINTS {
         let th = (i as f64 + 0.5) * std::f64::consts::PI / CHECK_POINTS as f64;
-        let (xs, xl) = (c * (0.5 * th).sin(), c + w * (0.5 * th).sin().powi(2));
-        let at = |x: f64| {
-            let xmc = x - c;
-            f.eval_with_noise(&points::Pt {
-                x,
-                omx: 1.0 - x,
-                xmc: if xmc == 0.0 { -0.0 } else { xmc },
-            })
-        };
-        let (stick, slip) = (at(xs), at(xl));
+        // the slip points from their offsets (x = c + w s^2 rounds to 1 where w is below
+        // an ulp of 1 per point)
+        let (sin2, cos2) = ((0.5 * th).sin().powi(2), (0.5 * th).cos().powi(2));
+        let (xs, xl) = (c * (0.5 * th).sin(), c + w * sin2);
+        let stick = f.eval_with_noise(&points::Pt::at(xs, c));
+        let slip = f.eval_with_noise(&points::Pt {
+            x: xl,
+            omx: w * cos2,
+            xmc: w * sin2,
+        });
         if !(stick.0 > 0.0 && stick.1.abs() <= mu * stick.0 * (1.0 + 1e-6) && slip.0 > 0.0) {
             return None;
         }

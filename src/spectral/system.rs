@@ -104,11 +104,33 @@ pub(crate) const QUOTIENT_BELOW: f64 = 0.03;
 const BONDED: usize = 3;
 const BONDED_BELOW: f64 = 1e-2;
 
+/// The nearest stick pole's distance beyond x = 1, in units of 1 - c, with the bonded columns
+/// (elsewhere 0.1). The traction distance of level 5, at its own root, to the panels at c to
+/// 1e-12 and tractions to 1e-10 (three Newton steps at level 5 from the panels' c; the
+/// panels' own distance to a solve at (1e-13, 1e-12) was below 1.4e-13):
+///
+/// | nearest / (1 - c) | b* = 0.15, mu~ = 10, 8.3e-13 | 0.1, 1.5, 3.7e-13 | 0.15, 4, 1.2e-11 | 0.1, 1, 1.8e-10 |
+/// |---|---|---|---|---|
+/// | 0.3 | 4.6e-8 .. 5.3e-8 | | | |
+/// | 0.1 | 1.7e-8 .. 1.8e-8 | 1.0e-8 .. 1.2e-8 | 3.0e-10 .. 4.4e-10 | 3.3e-11 |
+/// | 0.03 | 1.6e-10 .. 2.3e-10 | 5.8e-11 .. 6.4e-11 | 9.7e-11 .. 1.8e-10 | 9.8e-13 .. 4.9e-12 |
+/// | 0.01 | 1.6e-10 .. 2.9e-10 | 5.9e-11 .. 1.6e-10 | 1.6e-11 .. 2.8e-10 | 1.7e-12 .. 2.4e-11 |
+/// | 0.001 | 1.1e-10 .. 1.5e-10 | | | |
+///
+/// The three values per entry are the three roots; 4 bonded powers in place of 3 gave
+/// 2.4e-8 .. 2.7e-8 at the first scene, 2 gave 4.1e-8 .. 4.5e-8, and 4 poles per decade
+/// in place of 2.5 7.4e-8 .. 1.6e-7: the stick functions next to x = c see the edge
+/// singularity at x = 1, (1 - c) away, and need poles within a fraction of that distance
+/// from it. At fixed c (the panels') the residual (R1) of levels 2-5 fell from
+/// 5e-12 .. 5e-10 to 1e-14 .. 5e-12 at 1 - c = 3.7e-13 .. 2.2e-9.
+const BONDED_NEAREST: f64 = 0.03;
+
 /// Stick poles per decade with the bonded columns, at every level (level 1's density).
 const BONDED_STICK_DENSITY: f64 = 2.5;
 
 /// The ranges [nearest, farthest] of the poles' distances (B4): the stick poles at
-/// x = +-(1 + zeta), zeta from (1 - c) / 10 to c, the slip poles at x = -(c + eta), eta from
+/// x = +-(1 + zeta), zeta from (1 - c) / 10 (with the bonded columns [`BONDED_NEAREST`]
+/// (1 - c)) to c, the slip poles at x = -(c + eta), eta from
 /// c / 10 to 1 - c. The nearest is a tenth of the distance from the zone's end to the
 /// singular point beyond it; the farthest is the zone's own length scale. A pole farther
 /// away than that is resolved by the zone's polynomials already (for the stick zone,
@@ -121,7 +143,12 @@ const BONDED_STICK_DENSITY: f64 = 2.5;
 /// on the 14 scenes of tests/c/coupled_residuals.c the spectral solver serves, the largest
 /// rounding amplification (noise / machine epsilon) fell from 2.0e6 to 5.4e4.
 fn pole_ranges(c: f64, w: f64) -> [[f64; 2]; 2] {
-    [[0.1 * w, c], [0.1 * c, w]]
+    let near = if w < BONDED_BELOW {
+        BONDED_NEAREST
+    } else {
+        0.1
+    };
+    [[near * w, c], [0.1 * c, w]]
 }
 
 /// `n` points log-spaced over [lo, hi].
@@ -687,6 +714,25 @@ impl Fixed {
             self.eval_both(other, &Pt::at(x, self.basis.c))
         } else {
             (self.at(x), other.at(x))
+        }
+    }
+
+    /// [`Fixed::at_both`] at the slip point with 1 - x = `omx`, each solution's offset
+    /// x - c from its own slip width (x - c = w - omx; from a rounded x it would lose
+    /// eps / (1 - c) of the zone, and x rounds to 1 where 1 - c is below an ulp per point).
+    pub(crate) fn at_both_slip(&self, other: &Fixed, omx: f64) -> ((f64, f64), (f64, f64)) {
+        let pt = |f: &Fixed| {
+            let xmc = f.basis.w - omx;
+            Pt {
+                x: 1.0 - omx,
+                omx,
+                xmc: if xmc == 0.0 { -0.0 } else { xmc },
+            }
+        };
+        if Arc::ptr_eq(&self.basis, &other.basis) {
+            self.eval_both(other, &pt(self))
+        } else {
+            (self.eval(&pt(self)), other.eval(&pt(other)))
         }
     }
 
