@@ -665,7 +665,7 @@ impl<D: Start + ?Sized> Unloading<D> {
     /// three-zone pattern does not hold there, section 13).
     pub(crate) fn admissible(&self) -> Result<()> {
         let (leading, trailing) = self.zone_slips();
-        if let Some((o, s)) = leading.iter().find(|(_, s)| !(*s > 0.0)) {
+        if let Some((o, s)) = leading.iter().find(|(_, s)| s.is_nan() || *s <= 0.0) {
             return Err(Error::NoAdmissibleSolution(format!(
                 "exact unloading at Q/P = {}: the leading zone (-1, {}) slips against q = -mu p \
                  (slip {s:e} at 1 + x = {o:e}); the corner does not follow the three-zone \
@@ -674,7 +674,7 @@ impl<D: Start + ?Sized> Unloading<D> {
                 self.level.wa - 1.0
             )));
         }
-        if let Some((o, s)) = trailing.iter().find(|(_, s)| !(*s < 0.0)) {
+        if let Some((o, s)) = trailing.iter().find(|(_, s)| s.is_nan() || *s >= 0.0) {
             return Err(Error::NoAdmissibleSolution(format!(
                 "exact unloading at Q/P = {}: the trailing zone slips against q = +mu p \
                  (slip {s:e} at 1 - x = {o:e})",
