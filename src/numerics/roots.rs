@@ -4,6 +4,24 @@
 
 use crate::error::{Error, Result};
 
+/// The secant method's root of f from a and b (at most 40 steps, until the step's ends are
+/// within 1e-14 or f does not move): the tests' root of a closed-form reference, independent
+/// of [`brent`], which the solvers use.
+#[cfg(test)]
+pub(crate) fn secant(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64 {
+    let (mut fa, mut fb) = (f(a), f(b));
+    for _ in 0..40 {
+        if fb == fa || (b - a).abs() < 1e-14 {
+            break;
+        }
+        let next = b - fb * (b - a) / (fb - fa);
+        (a, fa) = (b, fb);
+        b = next;
+        fb = f(b);
+    }
+    b
+}
+
 /// A root of f in the bracket [a, b], where fa = f(a) and fb = f(b) have opposite signs,
 /// located to within `xtol` + 2 eps |x|. f may fail; its error is passed on. Returns the
 /// bracket end with the smaller |f| once the bracket is that narrow (or f vanishes there);

@@ -8,6 +8,7 @@ use super::*;
 use crate::Material;
 use crate::lcp::history::History;
 use crate::numerics::quadrature::{gauss_jacobi, gauss_legendre};
+use crate::numerics::roots::secant;
 use crate::problem::Profile;
 
 fn ply() -> Coupling {
@@ -97,17 +98,7 @@ fn goodman_limit_matches_the_closed_form() {
         let m = monotonic(&k, qp, 1e-11, 1e-9).unwrap();
         assert_eq!(m.level.edge, Edge::None);
         // (T11)'s root by the secant method
-        let (mut a, mut b) = (table - 1e-3, table + 1e-3);
-        let (mut fa, mut fb) = (t11(&k, a) - qp, t11(&k, b) - qp);
-        for _ in 0..30 {
-            if fb == fa || (b - a).abs() < 1e-14 {
-                break;
-            }
-            let next = b - fb * (b - a) / (fb - fa);
-            (a, fa) = (b, fb);
-            b = next;
-            fb = t11(&k, b) - qp;
-        }
+        let b = secant(|c2| t11(&k, c2) - qp, table - 1e-3, table + 1e-3);
         assert!(
             (b - table).abs() < 1e-6,
             "(T11) root {b} against the table's {table}"

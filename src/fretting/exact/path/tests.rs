@@ -8,27 +8,13 @@ use super::super::tests::t11;
 use super::super::unload::tests::t13;
 use super::*;
 use crate::Material;
+use crate::numerics::roots::secant;
 
 fn goodman() -> Coupling {
     let k = Material::plane_stress(181e9, 10.3e9, 7.17e9, 0.28)
         .unwrap()
         .coupling(0.3);
     Coupling { bp: 0.0, ..k }
-}
-
-/// The secant method's root of f from a and b.
-fn secant(f: impl Fn(f64) -> f64, mut a: f64, mut b: f64) -> f64 {
-    let (mut fa, mut fb) = (f(a), f(b));
-    for _ in 0..40 {
-        if fb == fa || (b - a).abs() < 1e-14 {
-            break;
-        }
-        let next = b - fb * (b - a) / (fb - fa);
-        (a, fa) = (b, fb);
-        b = next;
-        fb = f(b);
-    }
-    b
 }
 
 /// Everything the path reports of its state, bit for bit.

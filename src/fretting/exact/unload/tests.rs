@@ -7,6 +7,7 @@
 //! section 13); the dissipation of the first unloading against the grid's (section 14).
 
 use super::super::{distance, monotonic, quadrature_forces};
+use crate::numerics::roots::secant;
 use std::sync::Arc;
 
 use super::*;
@@ -72,17 +73,7 @@ fn goodman_limit_matches_the_closed_form() {
         assert_eq!(a2, 1.0);
         assert!(a1 < c2_star);
         // (T13)'s root by the secant method, from 0.01 either side of the solver's
-        let (mut a, mut b) = (a1 - 0.01, a1 + 0.01);
-        let (mut fa, mut fb) = (t13(&m, a) - (q_star - qp), t13(&m, b) - (q_star - qp));
-        for _ in 0..40 {
-            if fb == fa || (b - a).abs() < 1e-14 {
-                break;
-            }
-            let next = b - fb * (b - a) / (fb - fa);
-            (a, fa) = (b, fb);
-            b = next;
-            fb = t13(&m, b) - (q_star - qp);
-        }
+        let b = secant(|a| t13(&m, a) - (q_star - qp), a1 - 0.01, a1 + 0.01);
         assert!(
             (a1 - b).abs() < 1e-9 && u.c_error < 1e-10,
             "Q/Q* = {frac}: a1 = {a1} against (T13)'s {b} (estimate {:e})",
