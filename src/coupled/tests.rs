@@ -1012,6 +1012,19 @@ fn a_thin_slip_zone_agrees_with_the_panels() {
     assert_agree(&s, &p, b, mu);
 }
 
+/// COUPLED's answer at (1e-10, 1e-8), which must be the spectral solver's, and the panels'
+/// answer, with their wall times in ms.
+fn spectral_and_panels(k: &Coupling) -> (CoupledSolution, CoupledSolution, f64, f64) {
+    let t = std::time::Instant::now();
+    let s = solve_to(k, 1e-10, 1e-8).expect("spectral");
+    let spectral_ms = t.elapsed().as_secs_f64() * 1e3;
+    assert_eq!(s.regime(), "spectral", "({}, {})", k.bp, k.mu);
+    let t = std::time::Instant::now();
+    let p = solve_panels_to(k, 1e-10, 1e-8).expect("panels");
+    let panels_ms = t.elapsed().as_secs_f64() * 1e3;
+    (s, p, spectral_ms, panels_ms)
+}
+
 /// Thin slip zones down to 1 - c = 2.8e-13 (docs/theory_spectral.md section 6, b* = 0.02 ..
 /// 0.2, g = 0.032 .. 0.5): COUPLED's spectral answer (from Spence's stick edge) agrees with the
 /// panels, c and the tractions within the sum of both estimates. Prints both times.
@@ -1028,13 +1041,7 @@ fn thin_slip_zones_agree_with_the_panels() {
         (0.2, 10.0),
     ] {
         let k = Coupling { bp: b, bq: b, mu };
-        let t = std::time::Instant::now();
-        let s = solve_to(&k, 1e-10, 1e-8).expect("spectral");
-        let spectral_ms = t.elapsed().as_secs_f64() * 1e3;
-        assert_eq!(s.regime(), "spectral", "({b}, {mu})");
-        let t = std::time::Instant::now();
-        let p = solve_panels_to(&k, 1e-10, 1e-8).expect("panels");
-        let panels_ms = t.elapsed().as_secs_f64() * 1e3;
+        let (s, p, spectral_ms, panels_ms) = spectral_and_panels(&k);
         eprintln!(
             "({b}, {mu}): 1 - c = {:.2e}, level {}: spectral {spectral_ms:.0} ms, panels \
              {panels_ms:.0} ms",
@@ -1063,13 +1070,7 @@ fn thin_slip_zones_at_small_g_agree_with_the_panels() {
         (0.37, 380.0),
     ] {
         let k = Coupling { bp: b, bq: b, mu };
-        let t = std::time::Instant::now();
-        let s = solve_to(&k, 1e-10, 1e-8).expect("spectral");
-        let spectral_ms = t.elapsed().as_secs_f64() * 1e3;
-        assert_eq!(s.regime(), "spectral", "({b}, {mu})");
-        let t = std::time::Instant::now();
-        let p = solve_panels_to(&k, 1e-10, 1e-8).expect("panels");
-        let panels_ms = t.elapsed().as_secs_f64() * 1e3;
+        let (s, p, spectral_ms, panels_ms) = spectral_and_panels(&k);
         let g = k.reduced().0.edge_exponent();
         eprintln!(
             "({b}, {mu}): g = {g:.4}, 1 - c = {:.2e}, level {}: spectral {spectral_ms:.0} ms, \
