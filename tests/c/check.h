@@ -6,6 +6,7 @@
 
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 
 #include "orthoslip.h"
 
@@ -51,6 +52,16 @@ static inline int test_quick(void)
                     #a, check_a_, #b, check_b_);                                             \
             check_fail(__FILE__, __LINE__, #a " <= " #b);                                    \
         }                                                                                    \
+    } while (0)
+
+/* This thread's last error message names `function` and contains `fragment` (a failure
+ * reports the caller's line). */
+#define CHECK_MESSAGE(function, fragment)                                                    \
+    do {                                                                                     \
+        char check_msg_[1024];                                                               \
+        orthoslip_last_error_message(check_msg_, sizeof check_msg_);                         \
+        if (strstr(check_msg_, (function)) == NULL || strstr(check_msg_, (fragment)) == NULL) \
+            check_fail(__FILE__, __LINE__, "message names " #function " and " #fragment);   \
     } while (0)
 
 #endif

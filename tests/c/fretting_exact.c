@@ -28,14 +28,6 @@
 #define MU 1.0
 #define LOAD 0.3
 
-static void check_message(const char *function, const char *fragment)
-{
-    char msg[1024];
-    orthoslip_last_error_message(msg, sizeof msg);
-    CHECK(strstr(msg, function) != NULL);
-    CHECK(strstr(msg, fragment) != NULL);
-}
-
 /* The scene solved to tol (the stick set's ends) and traction_tol (the tractions). */
 static orthoslip_contact *contact_new(double tol, double traction_tol)
 {
@@ -200,20 +192,20 @@ int main(void)
     CHECK_STATUS(orthoslip_history_dissipated_energy(h, &w, &werr),
                  ORTHOSLIP_ERROR_INVALID_ARGUMENT);
     CHECK(w == SENTINEL && werr == SENTINEL);
-    check_message("orthoslip_history_dissipated_energy", "ORTHOSLIP_CYCLE_METHOD_LCP_HISTORY");
+    CHECK_MESSAGE("orthoslip_history_dissipated_energy", "ORTHOSLIP_CYCLE_METHOD_LCP_HISTORY");
     CHECK_OK(orthoslip_cycle_options_new(&o));
     CHECK_OK(orthoslip_cycle_options_set_method(o, ORTHOSLIP_CYCLE_METHOD_EXACT));
     CHECK_STATUS(orthoslip_contact_solve_cycles_with_options(k, o, LOAD, 5, &cy),
                  ORTHOSLIP_ERROR_INVALID_ARGUMENT);
     CHECK(cy == NULL);
-    check_message("orthoslip_contact_solve_cycles_with_options", "ORTHOSLIP_CYCLE_METHOD_EXACT");
+    CHECK_MESSAGE("orthoslip_contact_solve_cycles_with_options", "ORTHOSLIP_CYCLE_METHOD_EXACT");
     orthoslip_cycle_options_free(o);
     CHECK_OK(orthoslip_history_load(refused, LOAD));
     look(refused, before);
     {
         orthoslip_status st = orthoslip_history_load(refused, 0.0);
         CHECK(st == ORTHOSLIP_ERROR_NO_ADMISSIBLE_SOLUTION || st == ORTHOSLIP_ERROR_NO_CONVERGENCE);
-        check_message("orthoslip_history_load", "ORTHOSLIP_CYCLE_METHOD_LCP_HISTORY");
+        CHECK_MESSAGE("orthoslip_history_load", "ORTHOSLIP_CYCLE_METHOD_LCP_HISTORY");
     }
     look(refused, after);
     CHECK(memcmp(before, after, sizeof before) == 0);
