@@ -747,11 +747,7 @@ fn graded_distance(a: &Fixed, b: &Fixed) -> (f64, f64) {
                     omx: w - d,
                     xmc: d,
                 },
-                _ => Pt {
-                    x: 1.0 - d,
-                    omx: d,
-                    xmc: w - d,
-                },
+                _ => Pt::from_end(d, w),
             };
             let ((pa, qa), (pb, qb)) = a.eval_both(b, &pt);
             sp += ww * 0.5 * (hi - lo) * (pa - pb).abs();

@@ -22,6 +22,18 @@ impl Pt {
         }
     }
 
+    /// The point with 1 - x = `omx` (0 < omx <= 1 - c) for the slip width w = 1 - c, its offset
+    /// x - c taken as w - omx (from a rounded x it would lose eps / w of the zone), on the
+    /// stick side where that is 0.
+    pub(crate) fn from_end(omx: f64, w: f64) -> Self {
+        let xmc = w - omx;
+        Pt {
+            x: 1.0 - omx,
+            omx,
+            xmc: if xmc == 0.0 { -0.0 } else { xmc },
+        }
+    }
+
     /// Whether the point lies on the stick zone: x < c, or x = c from the stick side (xmc = -0.0,
     /// where the edge factors (c - x)^g vanish as they do in the limit; at
     /// xmc = -f64::MIN_POSITIVE they were (2e-308)^g, 1e-9 at g = 0.03 and 1e-3 at g = 0.01,

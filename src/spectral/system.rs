@@ -721,14 +721,7 @@ impl Fixed {
     /// x - c from its own slip width (x - c = w - omx; from a rounded x it would lose
     /// eps / (1 - c) of the zone, and x rounds to 1 where 1 - c is below an ulp per point).
     pub(crate) fn at_both_slip(&self, other: &Fixed, omx: f64) -> ((f64, f64), (f64, f64)) {
-        let pt = |f: &Fixed| {
-            let xmc = f.basis.w - omx;
-            Pt {
-                x: 1.0 - omx,
-                omx,
-                xmc: if xmc == 0.0 { -0.0 } else { xmc },
-            }
-        };
+        let pt = |f: &Fixed| Pt::from_end(omx, f.basis.w);
         if Arc::ptr_eq(&self.basis, &other.basis) {
             self.eval_both(other, &pt(self))
         } else {
