@@ -1139,12 +1139,7 @@ impl Profile for StateProfile {
         }
         let (rp, rq) = self.regular(x);
         if ax == 1.0 {
-            let q = if rq == 0.0 {
-                0.0
-            } else {
-                f64::INFINITY.copysign(rq)
-            };
-            return (f64::INFINITY, q);
+            return (f64::INFINITY, crate::problem::edge_infinity(rq));
         }
         let t = ax.min(1.0 - f64::EPSILON);
         let w = (1.0 - t).powf(-self.coupling.edge_exponent());

@@ -130,6 +130,16 @@ pub(crate) fn validate_tolerance(tol: f64) -> Result<()> {
     }
 }
 
+/// q at a punch edge of a solution without symmetry, where it is infinite: of the sign of
+/// `near`, q next to that edge, and 0 where that is 0.
+pub(crate) fn edge_infinity(near: f64) -> f64 {
+    if near == 0.0 {
+        0.0
+    } else {
+        f64::INFINITY.copysign(near)
+    }
+}
+
 /// What every method hands back: the coupling it solved, the stick edge, its own numerical
 /// error estimate and the traction profile on the half-line; the whole line follows from the
 /// symmetry (p even, q odd) in the provided [`Profile::tractions`].

@@ -155,11 +155,7 @@ impl Field {
             let sxy = if self.expansion.whole_line() {
                 // no symmetry: the sign of q in the end panel at this edge
                 let (_, q) = self.expansion.tractions(0.999 * x);
-                if q == 0.0 {
-                    0.0
-                } else {
-                    f64::INFINITY.copysign(q)
-                }
+                crate::problem::edge_infinity(q)
             } else {
                 let (_, q) = self.expansion.tractions(0.5);
                 if q == 0.0 {

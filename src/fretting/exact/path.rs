@@ -342,12 +342,7 @@ impl Profile for ExactProfile {
             } else {
                 self.path.tractions(2.0 - d, d)
             };
-            let q = if q == 0.0 {
-                0.0
-            } else {
-                f64::INFINITY.copysign(q)
-            };
-            return (f64::INFINITY, q);
+            return (f64::INFINITY, crate::problem::edge_infinity(q));
         }
         self.path.tractions(1.0 + x, 1.0 - x)
     }
