@@ -884,7 +884,8 @@ fn spectral_agrees_with_the_panels_on_a_grid() {
 /// Below b* = 0.25 the table's strips ([`crate::stick_edge_table`]) cover these 6 scenes
 /// (b* = 0.02 .. 0.24, from a tiny stick zone, c = 4.4e-5, to thin slip zones,
 /// 1 - c = 1.2e-4): COUPLED's spectral answer starts from the tabulated stick edge, and the
-/// spectral solver from Spence's stick edge ([`crate::spectral::from_guess`], the start
+/// spectral solver from the guessed stick edge (Spence's, or in thin slip zones the near-bonded
+/// law's, [`super::guessed_edge`]; [`crate::spectral::from_guess`], the start
 /// outside the table) answers too; both agree with the panels (an independent
 /// discretisation): c and the tractions within the sum of both estimates.
 #[test]
@@ -904,14 +905,15 @@ fn spectral_agrees_with_the_panels_from_the_table_below() {
         let k = Coupling { bp: b, bq: b, mu };
         let s = solve_to(&k, 1e-10, 1e-8).expect("spectral");
         assert_eq!(s.regime(), "spectral", "({b}, {mu})");
-        let g = spectral_from(&k, 1e-10, 1e-8, false).expect("spectral from Spence's guess");
+        let g =
+            spectral_from(&k, 1e-10, 1e-8, false).expect("spectral from the guessed stick edge");
         let p = solve_panels_to(&k, 1e-10, 1e-8).expect("panels");
         assert_agree(&s, &p, b, mu);
         assert_agree(&g, &p, b, mu);
     }
 }
 
-/// The table's strips below b* = 0.25 against the spectral solver started from Spence's
+/// The table's strips below b* = 0.25 against the spectral solver started from the guessed
 /// stick edge ([`crate::spectral::from_guess`]: no table, and a discretisation independent of
 /// the panels that built the table): at two random points of every patch there that the
 /// bases serve, the spectral c (to 1e-12, or to 1e-10 where it does not get to 1e-12) within
@@ -941,7 +943,9 @@ fn table_below_agrees_with_the_spectral_solver_from_spences_guess() {
                     loose += 1;
                     spectral_from(&k, 1e-10, 1e-8, false)
                 })
-                .unwrap_or_else(|| panic!("({b}, {mu}): no spectral answer from Spence's guess"));
+                .unwrap_or_else(|| {
+                    panic!("({b}, {mu}): no spectral answer from the guessed stick edge")
+                });
             let d = s.edge().distance(StickEdge::from_logit(lc));
             assert!(
                 d <= bound + s.error,
@@ -965,7 +969,7 @@ fn table_below_agrees_with_the_spectral_solver_from_spences_guess() {
 
 /// Outside the table's strips below b* = 0.25 (above their tops, 1 - c = 7.5e-5, 1.6e-4, and
 /// the thin slip zones 1.2e-7 and 3.8e-8 the bonded columns serve) the spectral solver starts
-/// from Spence's stick edge ([`crate::spectral::from_guess`]) and agrees with the panels: c
+/// from the guessed stick edge ([`crate::spectral::from_guess`]) and agrees with the panels: c
 /// and the tractions within the sum of both estimates.
 #[test]
 fn spectral_agrees_with_the_panels_outside_the_table() {
@@ -993,7 +997,7 @@ fn spectral_agrees_with_the_panels_outside_the_table() {
 }
 
 /// A thin slip zone outside the table (b* = 0.05, mu~ = 0.4, 1 - c = 3.4e-10, below the
-/// first limit of phase two, 5e-9): COUPLED's spectral answer from Spence's stick edge agrees
+/// first limit of phase two, 5e-9): COUPLED's spectral answer from the guessed stick edge agrees
 /// with the panels (c and the tractions within the sum of both estimates; the panels take
 /// about 1 s, the spectral answer 50 ms). The thinner ones are
 /// [`thin_slip_zones_agree_with_the_panels`]'s.
@@ -1026,7 +1030,7 @@ fn spectral_and_panels(k: &Coupling) -> (CoupledSolution, CoupledSolution, f64, 
 }
 
 /// Thin slip zones down to 1 - c = 2.8e-13 (docs/theory_spectral.md section 6, b* = 0.02 ..
-/// 0.2, g = 0.032 .. 0.5): COUPLED's spectral answer (from Spence's stick edge) agrees with the
+/// 0.2, g = 0.032 .. 0.5): COUPLED's spectral answer (from the guessed stick edge) agrees with the
 /// panels, c and the tractions within the sum of both estimates. Prints both times.
 #[test]
 #[ignore = "slow tier: the panels take 1-5 s per thin slip zone"]
@@ -1053,7 +1057,7 @@ fn thin_slip_zones_agree_with_the_panels() {
 }
 
 /// Thin slip zones at small g (docs/theory_spectral.md section 7, g = 0.0023 .. 0.013,
-/// 1 - c = 1.7e-12 .. 9.5e-5; b* = 0.16 .. 0.22 from Spence's stick edge, 0.25 .. 0.37 from the
+/// 1 - c = 1.7e-12 .. 9.5e-5; b* = 0.16 .. 0.22 from the guessed stick edge, 0.25 .. 0.37 from the
 /// table): COUPLED's spectral answer agrees with the panels, c and the tractions within the
 /// sum of both estimates. Prints both times (in one run 9-160 ms against the panels'
 /// 0.1-3.0 s).
@@ -1089,9 +1093,9 @@ fn thin_slip_zones_at_small_g_agree_with_the_panels() {
 /// [`spectral_agrees_with_the_panels_from_the_table_below`] on a grid: b* = 0.02 .. 0.23 (8
 /// rows), mu~ = 1e-4 .. 1.6^27 1e-4 (28 columns, each row up to 1 - c < 2.5e-13). At every point
 /// the panels answer by their root search and the spectral bases serve at the panels' c, the
-/// spectral solver is run from Spence's stick edge ([`crate::spectral::from_guess`]) and, where
+/// spectral solver is run from the guessed stick edge ([`crate::spectral::from_guess`]) and, where
 /// the table covers the point, from the tabulated one; every answer agrees with the panels,
-/// and at most 5 % of the points are left to the panels from Spence's start (on a 12-row
+/// and at most 5 % of the points are left to the panels from the guessed start (on a 12-row
 /// grid, 3 of 94: slip zones of 8e-6 .. 1.2e-5, where the root search gives up, (S6)) and
 /// none from the table's. Prints the medians of the times of both starts where the table
 /// covers the point.
@@ -1134,7 +1138,7 @@ fn spectral_agrees_with_the_panels_below_the_table_edge_on_a_grid() {
             }
             let Some(s) = guess else {
                 eprintln!(
-                    "({b}, {mu}): served, not answered from Spence's start (1 - c = {:.2e})",
+                    "({b}, {mu}): served, not answered from the guessed start (1 - c = {:.2e})",
                     p.edge().one_minus_c
                 );
                 unanswered += 1;
@@ -1158,9 +1162,9 @@ fn spectral_agrees_with_the_panels_below_the_table_edge_on_a_grid() {
         v[v.len() / 2]
     };
     eprintln!(
-        "{} of {served} served points answered from Spence's start: median {:.2} ms, panels \
+        "{} of {served} served points answered from the guessed start: median {:.2} ms, panels \
          median {:.2} ms; {tabulated} tabulated, all answered from the table: median {:.2} ms \
-         (from Spence's start there {:.2} ms)",
+         (from the guessed start there {:.2} ms)",
         served - unanswered,
         median(&mut ts),
         median(&mut tp),
