@@ -736,9 +736,9 @@ orthoslip_status orthoslip_history_load(orthoslip_history *h, double q_over_p);
 
 /**
  * Writes the current state: Q/P, the punch's tangential displacement u (per P/E, in a fixed
- * gauge: differences along the path are meaningful; NaN with ORTHOSLIP_CYCLE_METHOD_EXACT,
- * whose solvers do not compute it) and the moment the non-rotating punch carries,
- * int x p dx (per P a).
+ * gauge, 0 at the normal load: differences along the path are meaningful; the same gauge
+ * with ORTHOSLIP_CYCLE_METHOD_EXACT, where u is the rigid displacement of the exact stick
+ * set) and the moment the non-rotating punch carries, int x p dx (per P a).
  *
  * Returns ORTHOSLIP_OK or ORTHOSLIP_ERROR_NULL_POINTER (nothing written).
  *

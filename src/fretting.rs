@@ -833,15 +833,16 @@ impl LoadPath {
     }
 
     /// The current state. With [`CycleMethod::Exact`] there is no grid: `p`, `q` and `zones`
-    /// are empty (the state at any x is [`LoadPath::tractions_at`]) and the punch
-    /// displacement is NaN (not computed by the exact solvers).
+    /// are empty (the state at any x is [`LoadPath::tractions_at`]); the punch displacement
+    /// is the rigid displacement of the exact stick set (docs/theory_tangential.md (T16)), in
+    /// the grid's gauge.
     pub fn point(&self) -> PathPoint {
         match &self.engine {
             Engine::Grid(g) => PathPoint::from_state(g.fine.state(), self.unit),
             Engine::Exact(e) => PathPoint {
                 q_over_p: e.q_over_p(),
                 stick: e.stick_set(),
-                punch: f64::NAN,
+                punch: e.punch() * self.unit,
                 p: Vec::new(),
                 q: Vec::new(),
                 zones: Vec::new(),

@@ -116,8 +116,8 @@ class History:
     tangential load moved monotonically by :meth:`load`, ``steps`` grid steps per call.
     With ``method="exact"`` the exact solvers, to the contact's ``tol`` (the stick set's
     ends) and ``traction_tol`` (the tractions), without grid (``panels`` and ``steps``
-    unused): exact p and q at any x, the zones since the current branch began; the punch
-    displacement in :attr:`state` is NaN and :attr:`dissipated_energy` raises
+    unused): exact p and q at any x, the zones since the current branch began, the punch
+    displacement in :attr:`state` in the grid's gauge; :attr:`dissipated_energy` raises
     :class:`InvalidArgumentError` once Q has moved (not computed by the exact solvers).
 
     Raises:

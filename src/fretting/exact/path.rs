@@ -13,7 +13,7 @@ use std::sync::Arc;
 
 use super::frame::Solved;
 use super::unload::{Mirror, Start, Unloading, unload, unload_from};
-use super::{Monotonic, edge_exponent, monotonic, normal_load};
+use super::{Monotonic, edge_exponent, monotonic, normal_load, rule_on};
 use crate::error::{Error, Result};
 use crate::problem::{Coupling, Profile};
 
@@ -66,6 +66,9 @@ pub(crate) struct ExactPath {
     traction_tol: f64,
     pub(crate) normal: Arc<Normal>,
     pub(crate) branch: Branch,
+    /// The punch's rigid tangential displacement D (units of pi B P, the gauge of (T1):
+    /// docs/theory_tangential.md section 16), in the contact's frame; 0 at the normal load.
+    pub(crate) punch: f64,
 }
 
 /// The error `e` of the exact solver on `what`, with what the exact path covers.
@@ -114,6 +117,7 @@ impl ExactPath {
                 traction_error: cs.traction_error(),
             }),
             branch: Branch::Normal,
+            punch: 0.0,
         })
     }
 
@@ -201,8 +205,78 @@ impl ExactPath {
                 }
             }
         };
-        self.branch = next;
+        let mut next = ExactPath {
+            branch: next,
+            punch: f64::NAN,
+            ..self.clone()
+        };
+        next.punch = next.punch_from(self);
+        self.branch = next.branch;
+        self.punch = next.punch;
         Ok(())
+    }
+
+    /// The normal-load state of this path.
+    fn normal_path(&self) -> ExactPath {
+        ExactPath {
+            branch: Branch::Normal,
+            punch: 0.0,
+            ..self.clone()
+        }
+    }
+
+    /// D of this state, reached from `prev` (the state before the load step, with its D):
+    /// docs/theory_tangential.md (T16). A point of this state's stick set has stuck since its
+    /// branch's data (the normal load for the loading; for a later branch the state where the
+    /// load reversed, or any earlier state of the same branch, whose stick set holds this
+    /// one's), so D = D_ref + e(x) - e_ref(x) there; x is the stick set's middle.
+    fn punch_from(&self, prev: &ExactPath) -> f64 {
+        let (c1, c2) = self.stick_set();
+        let x = 0.5 * (c1 + c2);
+        match self.branch {
+            Branch::Normal => 0.0,
+            Branch::Loading { .. } => self.surface_change(&self.normal_path(), x),
+            Branch::Unloading { .. } => prev.punch + self.surface_change(prev, x),
+        }
+    }
+
+    /// e(x) - e_ref(x), the change of the surface's tangential displacement (T1),
+    /// e = -(bq S[p] + L[q]) (units of pi B P), from the state `reference` to this one, by
+    /// the graded rule of [`rule_on`] with both states' zone ends and x as breakpoints.
+    pub(crate) fn surface_change(&self, reference: &ExactPath, x: f64) -> f64 {
+        let g = edge_exponent(&self.k);
+        let (o0, m0) = (1.0 + x, 1.0 - x);
+        let mut bp = self.breakpoints();
+        bp.extend(reference.breakpoints());
+        bp.push((o0, m0));
+        let (mut left, mut total, mut log) = (0.0, 0.0, 0.0);
+        for (opx, omx, w) in rule_on(g, bp) {
+            let (pn, qn) = self.tractions(opx, omx);
+            let (pr, qr) = reference.tractions(opx, omx);
+            let dp = w * (pn - pr);
+            total += dp;
+            if opx < o0 {
+                left += dp;
+            }
+            // x - t from the nearer contact end, for its relative accuracy
+            let d = if opx.min(o0) < 1.0 {
+                o0 - opx
+            } else {
+                omx - m0
+            };
+            // the innermost nodes next to x round onto it (weights below 1e-16): their
+            // share of the integrable logarithm is below rounding
+            if d != 0.0 {
+                log += w * (qn - qr) * d.abs().ln();
+            }
+        }
+        -(self.k.bq * (left - 0.5 * total) + log / std::f64::consts::PI)
+    }
+
+    /// The punch's rigid tangential displacement D (units of pi B P; docs/theory_tangential.md
+    /// (T16)), in the contact's frame.
+    pub(crate) fn punch(&self) -> f64 {
+        self.punch
     }
 
     /// (p, q) at x given by (1 + x, 1 - x), in the contact's frame.

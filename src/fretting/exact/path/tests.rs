@@ -4,11 +4,12 @@
 //! refinement is in `crate::fretting::tests`.
 
 use super::super::reload::tests::{t15, t15_root};
-use super::super::tests::t11;
+use super::super::tests::{goodman_integral, jacobi_integral, t11};
 use super::super::unload::tests::t13;
 use super::*;
 use crate::Material;
 use crate::numerics::roots::secant;
+use std::f64::consts::PI;
 
 fn goodman() -> Coupling {
     let k = Material::plane_stress(181e9, 10.3e9, 7.17e9, 0.28)
@@ -113,4 +114,111 @@ fn negative_loading_is_the_mirror() {
         let (pm, qm) = down.tractions(1.0 - x, 1.0 + x);
         assert!((p - pm).abs() == 0.0 && (q + qm).abs() == 0.0, "x = {x}");
     }
+}
+
+/// (T16) for the loading at bp = 0: D = -(Q/P) ln(l/2)/pi - (1/pi) int_{c2}^{c} (mu p0 - q0)
+/// arccosh(1 + (s - c2)/l) ds, l = (1 + c2)/2, by quadrature of Goodman's closed-form
+/// tractions (arccosh(1 + u^2/l) = 2 asinh(u / sqrt(2 l)) in u = sqrt(s - c2)).
+fn t16_loading(k: &Coupling, c2: f64, qp: f64) -> f64 {
+    let l = 0.5 * (1.0 + c2);
+    let i = goodman_integral(k, c2, |u, _| 2.0 * (u / (2.0 * l).sqrt()).asinh() * 2.0 * u);
+    -qp * (0.5 * l).ln() / PI - i / PI
+}
+
+/// (T16) for the unloading at bp = 0 from the loaded state `m` (Q* = m.qp): D - D* =
+/// ((Q* - Q)/P) ln(l/2)/pi + (1/pi) int_{-1}^{a1} (mu p0 + q*) arccosh(1 + (a1 - s)/l) ds,
+/// l = (1 - a1)/2, by Gauss-Jacobi with (1 + s)^(-1/2) (p0's) and (a1 - s)^(1/2) (the
+/// arccosh's) taken out; q* has no kink on (-1, a1) at the loads used.
+fn t16_unloading<D: Start + ?Sized>(m: &D, a1: f64, qp: f64) -> f64 {
+    let mu = m.coupling().mu;
+    let l = 0.5 * (1.0 - a1);
+    let i = jacobi_integral(0.0, 1.0 + a1, 0.5, -0.5, |opx| {
+        let omx = 2.0 - opx;
+        let p0 = 1.0 / (PI * (opx * omx).sqrt());
+        let (_, q) = m.tractions(opx, omx);
+        (mu * p0 + q) * (1.0 + (1.0 + a1 - opx) / l).acosh()
+    });
+    (m.qp() - qp) * (0.5 * l).ln() / PI + i / PI
+}
+
+/// The largest difference of e - e_ref - (D - D_ref) over `n` points of the stick set of
+/// `path` (reached from `reference`): zero where (T16) holds, i.e. where (M2)/(U2) hold and
+/// the quadrature of L[q] is right.
+fn stick_spread(path: &ExactPath, reference: &ExactPath, n: usize) -> f64 {
+    let (c1, c2) = path.stick_set();
+    let d = path.punch() - reference.punch();
+    (1..n)
+        .map(|i| {
+            let x = c1 + (c2 - c1) * i as f64 / n as f64;
+            (path.surface_change(reference, x) - d).abs()
+        })
+        .fold(0.0, f64::max)
+}
+
+/// bp = 0: the punch displacement D of the exact path (docs/theory_tangential.md (T16)) at
+/// Q* and at -0.6 Q*, -0.8 Q* of the unloading equals the closed form by quadrature of
+/// Goodman's tractions (loading) and of the loaded state's (unloading), and the surface of
+/// the stick set moves rigidly with it.
+#[test]
+fn goodman_punch_matches_the_closed_form() {
+    let k = goodman();
+    let q_star = 0.18;
+    let mut path = ExactPath::new(&k, 1e-11, 1e-9).unwrap();
+    assert_eq!(path.punch(), 0.0);
+    let normal = path.clone();
+    let t = std::time::Instant::now();
+    path.load(q_star).unwrap();
+    println!("loaded in {:?}", t.elapsed());
+    let (_, c2) = path.stick_set();
+    let reference = t16_loading(&k, c2, q_star);
+    let spread = stick_spread(&path, &normal, 8);
+    println!(
+        "D(Q*) = {:.12} against (T16) {reference:.12} ({:.1e}); spread {spread:.1e}",
+        path.punch(),
+        path.punch() - reference
+    );
+    assert!((path.punch() - reference).abs() < 1e-9 && spread < 1e-9);
+    let Branch::Loading { m, .. } = &path.branch else {
+        panic!("not loading")
+    };
+    let m = m.clone();
+    let d_star = path.punch();
+    for frac in [-0.6, -0.8] {
+        let qp = frac * q_star;
+        let before = path.clone();
+        let t = std::time::Instant::now();
+        path.load(qp).unwrap();
+        let (a1, _) = path.stick_set();
+        let reference = d_star + t16_unloading(&*m, a1, qp);
+        let spread = stick_spread(&path, &before, 8);
+        println!(
+            "Q/Q* = {frac}: D = {:.12} against (T16) {reference:.12} ({:.1e}); spread {spread:.1e} \
+             ({:?})",
+            path.punch(),
+            path.punch() - reference,
+            t.elapsed()
+        );
+        assert!((path.punch() - reference).abs() < 1e-9 && spread < 1e-9);
+    }
+}
+
+/// The ply (mu = 0.3), loaded to Q* = 0.6 mu P and unloaded to -Q*: the surface of the stick
+/// set moves rigidly with the punch displacement D of (T16) (to the tractions' accuracy,
+/// 1e-5 asked), D against the grid LCP history is in `crate::fretting::tests`.
+#[test]
+fn ply_stick_set_moves_rigidly() {
+    let k = Material::plane_stress(181e9, 10.3e9, 7.17e9, 0.28)
+        .unwrap()
+        .coupling(0.3);
+    let mut path = ExactPath::new(&k, 1e-8, 1e-5).unwrap();
+    let normal = path.clone();
+    path.load(0.18).unwrap();
+    let loaded = path.clone();
+    let spread = stick_spread(&path, &normal, 10);
+    println!("D(Q*) = {:.10}, spread {spread:.1e}", path.punch());
+    assert!(spread < 1e-7);
+    path.load(-0.18).unwrap();
+    let spread = stick_spread(&path, &loaded, 10);
+    println!("D(-Q*) = {:.10}, spread {spread:.1e}", path.punch());
+    assert!(spread < 1e-7);
 }
