@@ -214,11 +214,43 @@ fn ply_stick_set_moves_rigidly() {
     let normal = path.clone();
     path.load(0.18).unwrap();
     let loaded = path.clone();
+    let t = std::time::Instant::now();
     let spread = stick_spread(&path, &normal, 10);
+    println!("one (T16): {:?}", t.elapsed() / 9);
     println!("D(Q*) = {:.10}, spread {spread:.1e}", path.punch());
     assert!(spread < 1e-7);
     path.load(-0.18).unwrap();
     let spread = stick_spread(&path, &loaded, 10);
     println!("D(-Q*) = {:.10}, spread {spread:.1e}", path.punch());
     assert!(spread < 1e-7);
+}
+
+/// The step of (T16a): the equilibrium density w = 1/(pi sqrt((x - lo)(hi - x))) of
+/// I = (lo, hi) has the log potential (1/pi) int_I w(x) ln|x - t| dx = (ln(l/2) +
+/// arccosh(|t - m|/l)) / pi (the arccosh only outside I), against Gauss-Chebyshev quadrature
+/// (smooth outside I; inside, the logarithm makes it converge like 1/n).
+#[test]
+fn equilibrium_density_potential() {
+    let (lo, hi) = (-1.0, -0.28);
+    let (m, l) = (0.5 * (lo + hi), 0.5 * (hi - lo));
+    let potential = |t: f64, n: usize| {
+        (0..n)
+            .map(|i| {
+                let x = m + l * (PI * (i as f64 + 0.5) / n as f64).cos();
+                (x - t).abs().ln() / n as f64
+            })
+            .sum::<f64>()
+            / PI
+    };
+    for t in [-0.9, -0.5, -0.3, -0.2, 0.4, 1.0] {
+        let xi = ((t - m) / l).abs();
+        let closed = ((0.5 * l).ln() + if xi > 1.0 { xi.acosh() } else { 0.0 }) / PI;
+        let (n, tol) = if xi > 1.0 {
+            (400, 1e-12)
+        } else {
+            (200_001, 1e-4)
+        };
+        let d = (potential(t, n) - closed).abs();
+        assert!(d < tol, "t = {t}: {d:e}");
+    }
 }
