@@ -522,7 +522,7 @@ fn exact_path_is_approached_by_the_grid() {
 }
 
 /// CycleMethod::Exact: a fretting run is refused (InvalidArgument, saying what is missing);
-/// a load path's dissipation once Q has moved too; the zones of the exact path carry their
+/// a load path's dissipation is answered; the zones of the exact path carry their
 /// slip directions (the loading's leading zone q = +mu p: -1, its edge zone q = -mu p: +1).
 #[test]
 fn exact_method_refusals_and_zones() {
@@ -537,7 +537,8 @@ fn exact_method_refusals_and_zones() {
     let ((c1, c2), _) = path.stick_zone();
     assert!(c1 < 0.0 && (c1 + c2).abs() < 1e-15);
     path.load(0.27).unwrap();
-    assert!(matches!(path.dissipated(), Err(Error::InvalidArgument(_))));
+    let w = path.dissipated().unwrap();
+    assert!(w.value > 0.0 && w.error.is_finite());
     let ((c1, c2), _) = path.stick_zone();
     let (_, _, z) = path.tractions_at(0.5 * (c1 + c2)).unwrap();
     assert_eq!(z, Zone::Stick);

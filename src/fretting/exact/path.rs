@@ -12,7 +12,7 @@
 use std::sync::Arc;
 
 use super::frame::Solved;
-use super::unload::{Mirror, Start, Unloading, unload, unload_from};
+use super::unload::{Mirror, Start, Unloading, by_parts, unload, unload_from};
 use super::{Monotonic, edge_exponent, monotonic, normal_load, rule_on};
 use crate::error::{Error, Result};
 use crate::problem::{Coupling, Profile};
@@ -69,6 +69,10 @@ pub(crate) struct ExactPath {
     /// The punch's rigid tangential displacement D (units of pi B P, the gauge of (T1):
     /// docs/theory_tangential.md section 16), in the contact's frame; 0 at the normal load.
     pub(crate) punch: f64,
+    /// Energy dissipated since the normal load (units of pi B P^2, (T8)), summed over the
+    /// load steps the path took (docs/theory_tangential.md section 17), and its estimate.
+    pub(crate) dissipated: f64,
+    pub(crate) dissipated_error: f64,
 }
 
 /// The error `e` of the exact solver on `what`, with what the exact path covers.
@@ -118,6 +122,8 @@ impl ExactPath {
             }),
             branch: Branch::Normal,
             punch: 0.0,
+            dissipated: 0.0,
+            dissipated_error: 0.0,
         })
     }
 
@@ -128,11 +134,6 @@ impl ExactPath {
             Branch::Loading { m, flip } => sign(*flip) * m.qp,
             Branch::Unloading { u, flip, .. } => sign(*flip) * u.qp,
         }
-    }
-
-    /// Whether the state is the normal load.
-    pub(crate) fn is_normal(&self) -> bool {
-        matches!(self.branch, Branch::Normal)
     }
 
     /// Moves Q/P monotonically from its current value to `qp` (checked by the caller:
@@ -211,9 +212,99 @@ impl ExactPath {
             ..self.clone()
         };
         next.punch = next.punch_from(self);
+        let (w, err) = next.step_dissipation(self);
         self.branch = next.branch;
         self.punch = next.punch;
+        self.dissipated += w;
+        self.dissipated_error += err;
         Ok(())
+    }
+
+    /// The state's own solution (in its own frame, the contact's mirrored when flipped).
+    fn own(&self) -> &Solved {
+        match &self.branch {
+            Branch::Normal => &self.normal.state,
+            Branch::Loading { m, .. } => &m.level.state,
+            Branch::Unloading { u, .. } => &u.level.state,
+        }
+    }
+
+    /// (p, H[q]) at x given by (1 + x, 1 - x), in the contact's frame (mirrored:
+    /// p~(x) = p(-x) and H[q~](x) = H[q](-x), section 15).
+    fn pressure_and_hq(&self, opx: f64, omx: f64) -> (f64, f64) {
+        let s = self.own();
+        let (o, m) = if self.flipped() {
+            (omx, opx)
+        } else {
+            (opx, omx)
+        };
+        let l = s.frame.locate(o, m);
+        let (p, _) = s.tractions_at(&l);
+        let (_, hq) = s.hilbert_at(&l);
+        (p, hq)
+    }
+
+    /// The energy dissipated over the load step from `prev` to this state (units of pi B P^2;
+    /// docs/theory_tangential.md (T17)) and its estimate. Per slip zone of this state, with
+    /// ds the step's slip (zero at the zone's stick end) and dslope = d(ds)/dx =
+    /// -(bq (p - p_prev) + H[q] - H[q_prev]): dW = |int mu p_mid ds| = |int dslope M|,
+    /// M = int mu p_mid from the contact's end (by parts, [`by_parts`]; one sign of ds over
+    /// the zone, as admissibility asks). The estimate: twice mu times the step's largest
+    /// slip (at the zone's contact end) times this state's traction estimate.
+    fn step_dissipation(&self, prev: &ExactPath) -> (f64, f64) {
+        if matches!(self.branch, Branch::Normal) {
+            return (0.0, 0.0);
+        }
+        let k = self.k;
+        let g = edge_exponent(&k);
+        let (c1, c2) = self.stick_set();
+        let te = self.estimates().1;
+        let mut bps = self.breakpoints();
+        bps.extend(prev.breakpoints());
+        let (mut w, mut err) = (0.0, 0.0);
+        // the zone at -1 (o = 1 + x) and the zone at +1 (o = 1 - x)
+        for (left, width) in [(true, 1.0 + c1), (false, 1.0 - c2)] {
+            if width <= 0.0 {
+                continue;
+            }
+            let at = |o: f64| if left { (o, 2.0 - o) } else { (2.0 - o, o) };
+            let mut cuts: Vec<f64> = bps
+                .iter()
+                .map(|&(o, m)| if left { o } else { m })
+                .filter(|&o| o > 0.0 && o < width)
+                .collect();
+            cuts.extend([0.0, width]);
+            cuts.sort_by(f64::total_cmp);
+            cuts.dedup();
+            let m = |o: f64| {
+                let (opx, omx) = at(o);
+                let (pa, _) = prev.tractions(opx, omx);
+                let (pb, _) = self.tractions(opx, omx);
+                0.5 * k.mu * (pa + pb)
+            };
+            // d(ds)/do: dslope at the left zone, -dslope at the right one
+            let f = |o: f64| {
+                let (opx, omx) = at(o);
+                let (pa, ha) = prev.pressure_and_hq(opx, omx);
+                let (pb, hb) = self.pressure_and_hq(opx, omx);
+                let dslope = -(k.bq * (pb - pa) + hb - ha);
+                if !dslope.is_finite() && o < NEAR_END {
+                    // H[q] of the normal load's bases is NaN within 1e-17 of the contact's
+                    // ends; the share of the rule's nodes there is below 1e-16 of dW
+                    return 0.0;
+                }
+                if left { dslope } else { -dslope }
+            };
+            w += by_parts(g, &cuts, &m, &f).abs();
+            // the slip at the contact's end, int_0^width f
+            let edge: f64 = cuts
+                .windows(2)
+                .flat_map(|c| crate::numerics::quadrature::graded_rule(c[0], c[1], 0.1, 1e-15, 16))
+                .map(|(o, wt)| wt * f(o))
+                .sum();
+            err += 2.0 * k.mu * edge.abs() * te;
+        }
+        (w, err)
     }
 
     /// The normal-load state of this path.
@@ -366,6 +457,10 @@ impl ExactPath {
         out
     }
 }
+
+/// Offset from a contact end (in units of a) inside which a non-finite slip slope counts as
+/// zero in [`ExactPath::step_dissipation`].
+const NEAR_END: f64 = 1e-14;
 
 /// A load-path state as a [`Profile`]: its tractions in the contact's frame at any x.
 #[derive(Clone)]
