@@ -736,9 +736,9 @@ orthoslip_status orthoslip_history_load(orthoslip_history *h, double q_over_p);
 
 /**
  * Writes the current state: Q/P, the punch's tangential displacement u (per P/E, in a fixed
- * gauge: differences along the path are meaningful; NaN with ORTHOSLIP_CYCLE_METHOD_EXACT,
- * whose solvers do not compute it) and the moment the non-rotating punch carries,
- * int x p dx (per P a).
+ * gauge, 0 at the normal load: differences along the path are meaningful; the same gauge
+ * with ORTHOSLIP_CYCLE_METHOD_EXACT, where u is the rigid displacement of the exact stick
+ * set) and the moment the non-rotating punch carries, int x p dx (per P a).
  *
  * Returns ORTHOSLIP_OK or ORTHOSLIP_ERROR_NULL_POINTER (nothing written).
  *
@@ -790,13 +790,14 @@ orthoslip_status orthoslip_history_tractions(const orthoslip_history *h,
                                              int *zone);
 
 /**
- * Writes the energy dissipated since the normal load (per unit thickness, P^2/E) and the
- * estimate of its grid error (the load-step error, first order, is not included).
+ * Writes the energy dissipated since the normal load (per unit thickness, P^2/E) and an
+ * estimate of its error. The grid: backward Euler over its steps, the estimate its grid
+ * error. ORTHOSLIP_CYCLE_METHOD_EXACT: the friction work with the mean pressure over each
+ * load step the history took (exact when bp = 0, second order in the load step
+ * otherwise), the estimate the exact tractions' part. Neither estimate includes the
+ * load-step error (the steps are the caller's).
  *
- * Returns ORTHOSLIP_OK, ORTHOSLIP_ERROR_NULL_POINTER or ORTHOSLIP_ERROR_INVALID_ARGUMENT
- * (ORTHOSLIP_CYCLE_METHOD_EXACT once Q has moved: the exact solvers do not integrate the
- * dissipation along a path; ORTHOSLIP_CYCLE_METHOD_LCP_HISTORY does); nothing written on
- * failure.
+ * Returns ORTHOSLIP_OK or ORTHOSLIP_ERROR_NULL_POINTER (nothing written).
  *
  * # Safety
  * `h` must be NULL or a live history; the outputs NULL or valid for one write each.

@@ -548,10 +548,10 @@ impl Fretting {
             return Err(Error::InvalidArgument(
                 "CycleMethod::Exact (ORTHOSLIP_CYCLE_METHOD_EXACT) does not solve fretting \
                  cycles: the exact cycle (the \
-                 dissipation (T8) integrated over each branch, the full-stick branches of the \
-                 bp = 0 closed forms (T13a), (T15a), and the corner structure of the \
-                 unloading and reloading at bp > 0, docs/theory_tangential.md sections 13-15) \
-                 is not built; CycleMethod::LcpHistory (ORTHOSLIP_CYCLE_METHOD_LCP_HISTORY) \
+                 full-stick branches of the bp = 0 closed forms (T13a), (T15a), the corner \
+                 structure of the unloading and reloading at bp > 0, docs/theory_tangential.md \
+                 sections 13-15, and the cycle's load steps for its dissipation (T17)) is not \
+                 built; CycleMethod::LcpHistory (ORTHOSLIP_CYCLE_METHOD_LCP_HISTORY) \
                  answers it, and a load path \
                  (LoadPath) follows the exact branches where they answer"
                     .into(),
@@ -833,15 +833,16 @@ impl LoadPath {
     }
 
     /// The current state. With [`CycleMethod::Exact`] there is no grid: `p`, `q` and `zones`
-    /// are empty (the state at any x is [`LoadPath::tractions_at`]) and the punch
-    /// displacement is NaN (not computed by the exact solvers).
+    /// are empty (the state at any x is [`LoadPath::tractions_at`]); the punch displacement
+    /// is the rigid displacement of the exact stick set (docs/theory_tangential.md (T16)), in
+    /// the grid's gauge.
     pub fn point(&self) -> PathPoint {
         match &self.engine {
             Engine::Grid(g) => PathPoint::from_state(g.fine.state(), self.unit),
             Engine::Exact(e) => PathPoint {
                 q_over_p: e.q_over_p(),
                 stick: e.stick_set(),
-                punch: f64::NAN,
+                punch: e.punch() * self.unit,
                 p: Vec::new(),
                 q: Vec::new(),
                 zones: Vec::new(),
@@ -914,12 +915,12 @@ impl LoadPath {
                 .sum::<f64>()
     }
 
-    /// Energy dissipated since the normal load (P^2/E), with the estimate of its grid error
-    /// (the load-step error is not included: a path's steps are the caller's choice).
-    ///
-    /// Errors: with [`CycleMethod::Exact`], `InvalidArgument` once Q has moved (0 at the
-    /// normal load): the exact solvers do not integrate the dissipation (T8) along a path;
-    /// [`CycleMethod::LcpHistory`] does.
+    /// Energy dissipated since the normal load (P^2/E), with an estimate of its error. The grid:
+    /// backward Euler over its steps (first order in the load step), the estimate its grid
+    /// error against the half-panel grid. [`CycleMethod::Exact`]: (T8) with the mean pressure
+    /// over each load step the path took (docs/theory_tangential.md (T17): exact at bp = 0,
+    /// second order in the step for bp > 0), the estimate the tractions' part. Neither
+    /// estimate includes the load-step error: a path's steps are the caller's choice.
     pub fn dissipated(&self) -> Result<Estimate> {
         match &self.engine {
             Engine::Grid(g) => Ok(Estimate {
@@ -930,17 +931,10 @@ impl LoadPath {
                     f64::INFINITY
                 },
             }),
-            Engine::Exact(e) if e.q_over_p() == 0.0 && e.is_normal() => Ok(Estimate {
-                value: 0.0,
-                error: 0.0,
+            Engine::Exact(e) => Ok(Estimate {
+                value: e.dissipated * self.unit,
+                error: e.dissipated_error * self.unit,
             }),
-            Engine::Exact(_) => Err(Error::InvalidArgument(
-                "CycleMethod::Exact (ORTHOSLIP_CYCLE_METHOD_EXACT) does not compute the energy \
-                 dissipated along a load path (the dissipation (T8) integrated over each \
-                 branch's loads is not built); CycleMethod::LcpHistory \
-                 (ORTHOSLIP_CYCLE_METHOD_LCP_HISTORY) answers it"
-                    .into(),
-            )),
         }
     }
 

@@ -116,9 +116,10 @@ class History:
     tangential load moved monotonically by :meth:`load`, ``steps`` grid steps per call.
     With ``method="exact"`` the exact solvers, to the contact's ``tol`` (the stick set's
     ends) and ``traction_tol`` (the tractions), without grid (``panels`` and ``steps``
-    unused): exact p and q at any x, the zones since the current branch began; the punch
-    displacement in :attr:`state` is NaN and :attr:`dissipated_energy` raises
-    :class:`InvalidArgumentError` once Q has moved (not computed by the exact solvers).
+    unused): exact p and q at any x, the zones since the current branch began, the punch
+    displacement in :attr:`state` in the grid's gauge, and :attr:`dissipated_energy` over
+    the loads the path took (the mean pressure per load step: exact when bp = 0, second
+    order in the step otherwise).
 
     Raises:
         InvalidArgumentError: mu = 0, or panels (8 ..= 2000) or steps (2 ..= 10000) out of
@@ -167,7 +168,8 @@ class History:
 
     @property
     def dissipated_energy(self) -> tuple[float, float]:
-        """(energy dissipated since the normal load in P^2/E, its grid-error estimate)."""
+        """(energy dissipated since the normal load in P^2/E, its error estimate without the
+        load-step error)."""
         out = ffi.new("double[2]")
         check(lib.orthoslip_history_dissipated_energy(self._handle, out, out + 1))
         return out[0], out[1]

@@ -163,23 +163,24 @@ def test_history_solution() -> None:
 
 def test_exact_history() -> None:
     """method="exact" at b* = 0.9, mu = 1, Q = 0.3 mu P: the grid at 50 and 100 panels
-    approaches the exact stick set's end c2; int q = Q/P by the trapezoidal rule in a graded
-    variable, the zones' friction, and the refusals (dissipation, a fretting run)."""
+    approaches the exact stick set's end c2 and punch displacement u; int q = Q/P by the trapezoidal rule in a graded
+    variable, the zones' friction, the dissipation (positive, the same for -Q) and the
+    refusal of a fretting run."""
     m = Material.effective(1.0, -0.8, 1.0, 1.0)
     k = Contact(m, mu=1.0, tol=1e-10, traction_tol=1e-8)
     h = k.history(method="exact")
     h.load(0.3)
     qp, u, moment = h.state
-    assert qp == 0.3 and math.isnan(u) and moment < 0.0
+    assert qp == 0.3 and math.isfinite(u) and u > 0.0 and moment < 0.0
     c1, c2, err = h.stick_zone
     assert -0.95 < c1 < -0.9 and err < 1e-10
-    prev = math.inf
+    prev, prev_u = math.inf, math.inf
     for panels in (50, 100):
         g = k.history(panels=panels)
         g.load(0.3)
-        d = abs(g.stick_zone[1] - c2)
-        assert d < prev
-        prev = d
+        d, du = abs(g.stick_zone[1] - c2), abs(g.state[1] - u)
+        assert d < prev and du < prev_u
+        prev, prev_u = d, du
     # int q: x = -cos(t) takes out the edges' singularities (p ~ (1 -+ x)^(-g), g < 1/2)
     t = np.linspace(0.0, math.pi, 40001)[1:-1]
     x = -np.cos(t)
@@ -190,8 +191,11 @@ def test_exact_history() -> None:
     assert np.all(np.abs(q[zone == 1] + p[zone == 1]) <= 1e-12 * p[zone == 1])
     assert np.all(np.abs(q[zone == -1] - p[zone == -1]) <= 1e-12 * p[zone == -1])
     assert np.all(np.abs(q[zone == 0]) <= p[zone == 0])
-    with pytest.raises(InvalidArgumentError, match="LCP_HISTORY"):
-        h.dissipated_energy
+    w, werr = h.dissipated_energy
+    mirror = k.history(method="exact")
+    mirror.load(-0.3)
+    assert w > 0.0 and math.isfinite(werr)
+    assert abs(mirror.dissipated_energy[0] - w) <= 1e-10 * w
     with pytest.raises(InvalidArgumentError, match="LCP_HISTORY"):
         k.solve_cycles(0.3, method=CycleMethod.EXACT)
     s = h.solution()

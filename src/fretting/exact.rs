@@ -347,9 +347,15 @@ pub(crate) fn quadrature_forces(g: f64, s: &Solved) -> (f64, f64) {
 /// (1.5 + sqrt(1.25))^(-2n) = 2.6^(-2n): 1e-17 at n = 20 (with ratio 0.1 and 12 points,
 /// 2e-7, which the rule was off by on int p of the normal load).
 pub(crate) fn contact_rule(g: f64, a: &Solved, b: &Solved) -> Vec<(f64, f64, f64)> {
-    use crate::numerics::quadrature::{gauss_jacobi, gauss_legendre};
     let mut bp = breakpoints(a);
     bp.extend(breakpoints(b));
+    rule_on(g, bp)
+}
+
+/// [`contact_rule`] on the breakpoints `bp` ((1 + x, 1 - x), both contact ends among them,
+/// in any order; duplicates are dropped).
+pub(crate) fn rule_on(g: f64, mut bp: Vec<(f64, f64)>) -> Vec<(f64, f64, f64)> {
+    use crate::numerics::quadrature::{gauss_jacobi, gauss_legendre};
     bp.sort_by(|u, v| u.0.total_cmp(&v.0));
     bp.dedup_by(|u, v| (u.0 - v.0).abs() <= 1e-15 * v.0.max(1e-300));
     let (gl_x, gl_w) = gauss_legendre(RULE_POINTS);

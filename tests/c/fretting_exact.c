@@ -7,11 +7,11 @@
  *   in -x (zone -1), |q| <= mu p on the stick set (zone 0);
  * - mirror symmetry under Q -> -Q: [c1, c2] -> [-c2, -c1], p(x) -> p(-x), q(x) -> -q(-x);
  * - the grid LCP history (ORTHOSLIP_CYCLE_METHOD_LCP_HISTORY) at 50 and 100 panels per
- *   half-width approaches the exact c2 and moment as the grid refines;
+ *   half-width approaches the exact c2, moment and punch displacement u as the grid refines;
+ * - the dissipation along the path is positive, with a finite estimate, and the same for -Q;
  * - what the exact path does not answer is refused with a status, a message naming the
  *   exact method and the LCP history, nothing written and the history unchanged: a fretting
- *   run, the dissipation along the path, and the unloading at strong coupling (its corner
- *   structure is not built).
+ *   run and the unloading at strong coupling (its corner structure is not built).
  * Quick mode (the C++ build) leaves out the finer grid.
  * Scene: the isotropic form b* = 0.9 (nu = -0.8), mu = 1, Q = 0.3 mu P, where the trailing
  * edge zone is 0.078 wide (docs/theory_tangential.md section 12). */
@@ -112,7 +112,8 @@ int main(void)
     orthoslip_solution *s = NULL;
     orthoslip_method used;
     double qp, u, moment, c1, c2, err, terr, d1, d2, w = SENTINEL, werr = SENTINEL;
-    double before[16], after[16], prev_c2 = INFINITY, prev_m = INFINITY;
+    double before[16], after[16], prev_c2 = INFINITY, prev_m = INFINITY, prev_u = INFINITY;
+    double qpm, um, mm;
     double x[7] = {-1.0, -0.97, -0.5, 0.0, 0.4, 0.9, 1.0}, p[7], q[7], pm[7], qm[7];
     int zone[7], zm[7], i;
     size_t n;
@@ -128,7 +129,9 @@ int main(void)
     CHECK_OK(orthoslip_history_load(h, LOAD));
     CHECK_OK(orthoslip_history_load(mirror, -LOAD));
     CHECK_OK(orthoslip_history_state(h, &qp, &u, &moment));
-    CHECK(qp == LOAD && isnan(u) && moment < 0.0);
+    CHECK(qp == LOAD && isfinite(u) && u > 0.0 && moment < 0.0);
+    CHECK_OK(orthoslip_history_state(mirror, &qpm, &um, &mm));
+    CHECK(qpm == -LOAD && fabs(um + u) <= 1e-12 * u && mm == -moment);
     CHECK_OK(orthoslip_history_stick_zone(h, &c1, &c2, &err));
     CHECK_OK(orthoslip_history_traction_error_estimate(h, &terr));
     printf("exact: c1 = %.10f, c2 = %.10f (estimate %.1e), moment %.8e, tractions %.1e\n", c1,
@@ -167,11 +170,12 @@ int main(void)
         CHECK_OK(orthoslip_history_load(g, LOAD));
         CHECK_OK(orthoslip_history_state(g, &gq, &gu, &gm));
         CHECK_OK(orthoslip_history_stick_zone(g, &g1, &g2, &ge));
-        printf("grid n = %zu: |dc2| = %.2e, |dmoment| = %.2e\n", n, fabs(g2 - c2),
-               fabs(gm - moment));
-        CHECK(fabs(g2 - c2) < prev_c2 && fabs(gm - moment) < prev_m);
+        printf("grid n = %zu: |dc2| = %.2e, |dmoment| = %.2e, u = %.8f (exact %.8f)\n", n,
+               fabs(g2 - c2), fabs(gm - moment), gu, u);
+        CHECK(fabs(g2 - c2) < prev_c2 && fabs(gm - moment) < prev_m && fabs(gu - u) < prev_u);
         prev_c2 = fabs(g2 - c2);
         prev_m = fabs(gm - moment);
+        prev_u = fabs(gu - u);
         orthoslip_history_free(g);
     }
     CHECK_LE(prev_c2, 0.02);
@@ -186,13 +190,14 @@ int main(void)
     CHECK(pm[0] == p[2] && qm[0] == q[2]);
     orthoslip_solution_free(s);
 
-    /* refused: the dissipation along the path, a fretting run, the strong coupling's
-     * unloading (corner structure); nothing written, handles NULL, the history unchanged */
-    w = werr = SENTINEL;
-    CHECK_STATUS(orthoslip_history_dissipated_energy(h, &w, &werr),
-                 ORTHOSLIP_ERROR_INVALID_ARGUMENT);
-    CHECK(w == SENTINEL && werr == SENTINEL);
-    CHECK_MESSAGE("orthoslip_history_dissipated_energy", "ORTHOSLIP_CYCLE_METHOD_LCP_HISTORY");
+    /* the dissipation along the path (one load step), and its mirror */
+    CHECK_OK(orthoslip_history_dissipated_energy(h, &w, &werr));
+    CHECK_OK(orthoslip_history_dissipated_energy(mirror, &d1, &d2));
+    printf("exact: W = %.8e P^2/E (estimate %.1e), mirror %.8e\n", w, werr, d1);
+    CHECK(w > 0.0 && isfinite(werr) && fabs(d1 - w) <= 1e-10 * w);
+
+    /* refused: a fretting run, the strong coupling's unloading (corner structure); nothing
+     * written, handles NULL, the history unchanged */
     CHECK_OK(orthoslip_cycle_options_new(&o));
     CHECK_OK(orthoslip_cycle_options_set_method(o, ORTHOSLIP_CYCLE_METHOD_EXACT));
     CHECK_STATUS(orthoslip_contact_solve_cycles_with_options(k, o, LOAD, 5, &cy),

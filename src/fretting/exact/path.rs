@@ -12,8 +12,8 @@
 use std::sync::Arc;
 
 use super::frame::Solved;
-use super::unload::{Mirror, Start, Unloading, unload, unload_from};
-use super::{Monotonic, edge_exponent, monotonic, normal_load};
+use super::unload::{Mirror, Start, Unloading, by_parts, unload, unload_from};
+use super::{Monotonic, edge_exponent, monotonic, normal_load, rule_on};
 use crate::error::{Error, Result};
 use crate::problem::{Coupling, Profile};
 
@@ -66,6 +66,13 @@ pub(crate) struct ExactPath {
     traction_tol: f64,
     pub(crate) normal: Arc<Normal>,
     pub(crate) branch: Branch,
+    /// The punch's rigid tangential displacement D (units of pi B P, the gauge of (T1):
+    /// docs/theory_tangential.md section 16), in the contact's frame; 0 at the normal load.
+    pub(crate) punch: f64,
+    /// Energy dissipated since the normal load (units of pi B P^2, (T8)), summed over the
+    /// load steps the path took (docs/theory_tangential.md section 17), and its estimate.
+    pub(crate) dissipated: f64,
+    pub(crate) dissipated_error: f64,
 }
 
 /// The error `e` of the exact solver on `what`, with what the exact path covers.
@@ -114,6 +121,9 @@ impl ExactPath {
                 traction_error: cs.traction_error(),
             }),
             branch: Branch::Normal,
+            punch: 0.0,
+            dissipated: 0.0,
+            dissipated_error: 0.0,
         })
     }
 
@@ -124,11 +134,6 @@ impl ExactPath {
             Branch::Loading { m, flip } => sign(*flip) * m.qp,
             Branch::Unloading { u, flip, .. } => sign(*flip) * u.qp,
         }
-    }
-
-    /// Whether the state is the normal load.
-    pub(crate) fn is_normal(&self) -> bool {
-        matches!(self.branch, Branch::Normal)
     }
 
     /// Moves Q/P monotonically from its current value to `qp` (checked by the caller:
@@ -201,8 +206,168 @@ impl ExactPath {
                 }
             }
         };
-        self.branch = next;
+        let mut next = ExactPath {
+            branch: next,
+            punch: f64::NAN,
+            ..self.clone()
+        };
+        next.punch = next.punch_from(self);
+        let (w, err) = next.step_dissipation(self);
+        self.branch = next.branch;
+        self.punch = next.punch;
+        self.dissipated += w;
+        self.dissipated_error += err;
         Ok(())
+    }
+
+    /// The state's own solution (in its own frame, the contact's mirrored when flipped).
+    fn own(&self) -> &Solved {
+        match &self.branch {
+            Branch::Normal => &self.normal.state,
+            Branch::Loading { m, .. } => &m.level.state,
+            Branch::Unloading { u, .. } => &u.level.state,
+        }
+    }
+
+    /// (p, H[q]) at x given by (1 + x, 1 - x), in the contact's frame (mirrored:
+    /// p~(x) = p(-x) and H[q~](x) = H[q](-x), section 15).
+    fn pressure_and_hq(&self, opx: f64, omx: f64) -> (f64, f64) {
+        let s = self.own();
+        let (o, m) = if self.flipped() {
+            (omx, opx)
+        } else {
+            (opx, omx)
+        };
+        let l = s.frame.locate(o, m);
+        let (p, _) = s.tractions_at(&l);
+        let (_, hq) = s.hilbert_at(&l);
+        (p, hq)
+    }
+
+    /// The energy dissipated over the load step from `prev` to this state (units of pi B P^2;
+    /// docs/theory_tangential.md (T17)) and its estimate. Per slip zone of this state, with
+    /// ds the step's slip (zero at the zone's stick end) and dslope = d(ds)/dx =
+    /// -(bq (p - p_prev) + H[q] - H[q_prev]): dW = |int mu p_mid ds| = |int dslope M|,
+    /// M = int mu p_mid from the contact's end (by parts, [`by_parts`]; one sign of ds over
+    /// the zone, as admissibility asks). The estimate: twice mu times the step's largest
+    /// slip (at the zone's contact end) times this state's traction estimate.
+    fn step_dissipation(&self, prev: &ExactPath) -> (f64, f64) {
+        if matches!(self.branch, Branch::Normal) {
+            return (0.0, 0.0);
+        }
+        let k = self.k;
+        let g = edge_exponent(&k);
+        let (c1, c2) = self.stick_set();
+        let te = self.estimates().1;
+        let mut bps = self.breakpoints();
+        bps.extend(prev.breakpoints());
+        let (mut w, mut err) = (0.0, 0.0);
+        // the zone at -1 (o = 1 + x) and the zone at +1 (o = 1 - x)
+        for (left, width) in [(true, 1.0 + c1), (false, 1.0 - c2)] {
+            if width <= 0.0 {
+                continue;
+            }
+            let at = |o: f64| if left { (o, 2.0 - o) } else { (2.0 - o, o) };
+            let mut cuts: Vec<f64> = bps
+                .iter()
+                .map(|&(o, m)| if left { o } else { m })
+                .filter(|&o| o > 0.0 && o < width)
+                .collect();
+            cuts.extend([0.0, width]);
+            cuts.sort_by(f64::total_cmp);
+            cuts.dedup();
+            let m = |o: f64| {
+                let (opx, omx) = at(o);
+                let (pa, _) = prev.tractions(opx, omx);
+                let (pb, _) = self.tractions(opx, omx);
+                0.5 * k.mu * (pa + pb)
+            };
+            // d(ds)/do: dslope at the left zone, -dslope at the right one
+            let f = |o: f64| {
+                let (opx, omx) = at(o);
+                let (pa, ha) = prev.pressure_and_hq(opx, omx);
+                let (pb, hb) = self.pressure_and_hq(opx, omx);
+                let dslope = -(k.bq * (pb - pa) + hb - ha);
+                if !dslope.is_finite() && o < NEAR_END {
+                    // H[q] of the normal load's bases is NaN within 1e-17 of the contact's
+                    // ends; the share of the rule's nodes there is below 1e-16 of dW
+                    return 0.0;
+                }
+                if left { dslope } else { -dslope }
+            };
+            w += by_parts(g, &cuts, &m, &f).abs();
+            // the slip at the contact's end, int_0^width f
+            let edge: f64 = cuts
+                .windows(2)
+                .flat_map(|c| crate::numerics::quadrature::graded_rule(c[0], c[1], 0.1, 1e-15, 16))
+                .map(|(o, wt)| wt * f(o))
+                .sum();
+            err += 2.0 * k.mu * edge.abs() * te;
+        }
+        (w, err)
+    }
+
+    /// The normal-load state of this path.
+    fn normal_path(&self) -> ExactPath {
+        ExactPath {
+            branch: Branch::Normal,
+            punch: 0.0,
+            ..self.clone()
+        }
+    }
+
+    /// D of this state, reached from `prev` (the state before the load step, with its D):
+    /// docs/theory_tangential.md (T16). A point of this state's stick set has stuck since its
+    /// branch's data (the normal load for the loading; for a later branch the state where the
+    /// load reversed, or any earlier state of the same branch, whose stick set holds this
+    /// one's), so D = D_ref + e(x) - e_ref(x) there; x is the stick set's middle.
+    fn punch_from(&self, prev: &ExactPath) -> f64 {
+        let (c1, c2) = self.stick_set();
+        let x = 0.5 * (c1 + c2);
+        match self.branch {
+            Branch::Normal => 0.0,
+            Branch::Loading { .. } => self.surface_change(&self.normal_path(), x),
+            Branch::Unloading { .. } => prev.punch + self.surface_change(prev, x),
+        }
+    }
+
+    /// e(x) - e_ref(x), the change of the surface's tangential displacement (T1),
+    /// e = -(bq S[p] + L[q]) (units of pi B P), from the state `reference` to this one, by
+    /// the graded rule of [`rule_on`] with both states' zone ends and x as breakpoints.
+    pub(crate) fn surface_change(&self, reference: &ExactPath, x: f64) -> f64 {
+        let g = edge_exponent(&self.k);
+        let (o0, m0) = (1.0 + x, 1.0 - x);
+        let mut bp = self.breakpoints();
+        bp.extend(reference.breakpoints());
+        bp.push((o0, m0));
+        let (mut left, mut total, mut log) = (0.0, 0.0, 0.0);
+        for (opx, omx, w) in rule_on(g, bp) {
+            let (pn, qn) = self.tractions(opx, omx);
+            let (pr, qr) = reference.tractions(opx, omx);
+            let dp = w * (pn - pr);
+            total += dp;
+            if opx < o0 {
+                left += dp;
+            }
+            // x - t from the nearer contact end, for its relative accuracy
+            let d = if opx.min(o0) < 1.0 {
+                o0 - opx
+            } else {
+                omx - m0
+            };
+            // the innermost nodes next to x round onto it (weights below 1e-16): their
+            // share of the integrable logarithm is below rounding
+            if d != 0.0 {
+                log += w * (qn - qr) * d.abs().ln();
+            }
+        }
+        -(self.k.bq * (left - 0.5 * total) + log / std::f64::consts::PI)
+    }
+
+    /// The punch's rigid tangential displacement D (units of pi B P; docs/theory_tangential.md
+    /// (T16)), in the contact's frame.
+    pub(crate) fn punch(&self) -> f64 {
+        self.punch
     }
 
     /// (p, q) at x given by (1 + x, 1 - x), in the contact's frame.
@@ -292,6 +457,10 @@ impl ExactPath {
         out
     }
 }
+
+/// Offset from a contact end (in units of a) inside which a non-finite slip slope counts as
+/// zero in [`ExactPath::step_dissipation`].
+const NEAR_END: f64 = 1e-14;
 
 /// A load-path state as a [`Profile`]: its tractions in the contact's frame at any x.
 #[derive(Clone)]

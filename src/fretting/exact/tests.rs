@@ -54,7 +54,13 @@ fn normal_load_matches_coupled() {
 
 /// int_a^b f(u) du where f carries (u - a)^beta_a and (b - u)^alpha_b times a smooth
 /// function: Gauss-Jacobi in the mapped variable with those exponents taken out of f.
-fn jacobi_integral(a: f64, b: f64, alpha: f64, beta: f64, f: impl Fn(f64) -> f64) -> f64 {
+pub(crate) fn jacobi_integral(
+    a: f64,
+    b: f64,
+    alpha: f64,
+    beta: f64,
+    f: impl Fn(f64) -> f64,
+) -> f64 {
     let (t, w) = gauss_jacobi(60, alpha, beta);
     t.iter()
         .zip(&w)
@@ -66,16 +72,23 @@ fn jacobi_integral(a: f64, b: f64, alpha: f64, beta: f64, f: impl Fn(f64) -> f64
 }
 
 /// (T11) of docs/theory_tangential.md: Q/P as a function of c2 for bp = 0, by quadrature of
-/// Goodman's closed-form tractions in u = sqrt(s - c2), split at s = -c when c2 < -c
-/// (q0 = -mu p0 left of -c; right of -c the integrand is smooth plus a square root of
-/// s + c; it vanishes like sqrt(c - s) at c).
+/// Goodman's closed-form tractions ([`goodman_integral`] with the kernel
+/// sqrt((1 + s)/(s - c2))).
 pub(crate) fn t11(k: &Coupling, c2: f64) -> f64 {
+    goodman_integral(k, c2, |_, s| (1.0 + s).sqrt() * 2.0)
+}
+
+/// int_{c2}^{c} (mu p0 - q0)(s) kern(s) ds for bp = 0 (Goodman's closed-form tractions), with
+/// `f(u, s)` = kern(s) 2 u given in u = sqrt(s - c2) (ds = 2 u du; f smooth in u), split at
+/// s = -c when c2 < -c (q0 = -mu p0 left of -c; right of -c the integrand is smooth plus a
+/// square root of s + c; it vanishes like sqrt(c - s) at c).
+pub(crate) fn goodman_integral(k: &Coupling, c2: f64, kern: impl Fn(f64, f64) -> f64) -> f64 {
     let gs = crate::goodman::solve(k).unwrap();
     let c = gs.edge().c;
     let f = |u: f64| {
         let s = c2 + u * u;
         let (p0, q0) = gs.tractions(s);
-        (k.mu * p0 - q0) * (1.0 + s).sqrt() * 2.0
+        (k.mu * p0 - q0) * kern(u, s)
     };
     let top = (c - c2).sqrt();
     if c2 < -c {

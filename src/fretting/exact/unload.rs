@@ -852,7 +852,12 @@ pub(crate) fn dissipation<D: Start + ?Sized>(a: &Unloading<D>, b: &Unloading<D>)
 /// with m's weight o^-g taken out.
 ///
 /// [`graded_rule`]: crate::numerics::quadrature::graded_rule
-fn by_parts(g: f64, cuts: &[f64], m: &dyn Fn(f64) -> f64, f: &dyn Fn(f64) -> f64) -> f64 {
+pub(crate) fn by_parts(
+    g: f64,
+    cuts: &[f64],
+    m: &dyn Fn(f64) -> f64,
+    f: &dyn Fn(f64) -> f64,
+) -> f64 {
     use crate::numerics::quadrature::{gauss_jacobi, gauss_legendre, graded_rule};
     let (jx, jw) = gauss_jacobi(8, 0.0, -g);
     let (lx, lw) = gauss_legendre(8);
