@@ -84,6 +84,70 @@ pub(crate) fn constrained(
     e.complete(&x)
 }
 
+/// [`constrained`] with its pivoted QR chosen by size: [`nested_qr_solve`]'s (one group) up
+/// to [`OWN_QR_COLUMNS`] columns, faer's above. For the spectral frames, whose larger levels
+/// [`constrained_nested`] solves anyway. (The fretting frames stay on faer's: on the
+/// unloading frames, with diagonal ratios of R down to 2.7e-16, this one's solutions led to
+/// NaN residuals in `fretting::exact::unload::tests`; measured before
+/// `fretting::exact::frame::locate`'s fix, not since.)
+pub(crate) fn constrained_sized(
+    a: &[f64],
+    cols: usize,
+    b: &[f64],
+    cons: Vec<(Vec<f64>, f64)>,
+    pivot_cols: usize,
+) -> Result<Vec<f64>, ConstrainedFailure> {
+    if cols > OWN_QR_COLUMNS {
+        return constrained(a, cols, b, cons, pivot_cols);
+    }
+    constrained_own(a, cols, b, cons, pivot_cols)
+}
+
+/// [`constrained`] with [`nested_qr_solve`]'s pivoted QR (one group) in place of faer's.
+fn constrained_own(
+    a: &[f64],
+    cols: usize,
+    b: &[f64],
+    cons: Vec<(Vec<f64>, f64)>,
+    pivot_cols: usize,
+) -> Result<Vec<f64>, ConstrainedFailure> {
+    let e = Elimination::new(a, cols, b, cons, pivot_cols)?;
+    let n = e.keep.len();
+    let [_, x] = nested_qr_solve(&e.reduced, n, &e.rhs, n);
+    e.complete(&x)
+}
+
+/// Most columns for which [`constrained_sized`] takes its pivoted QR from [`nested_qr_solve`]
+/// (one group), not from faer's `col_piv_qr`. Measured (`own_qr_crossover`: thread CPU time
+/// per solve with the elimination of three constraints, the two alternated, minima of 7;
+/// rows 2.8 per column as in the spectral systems), two runs, on matrices of the frames'
+/// shape (half the columns poles 1/(z_j - x) clustered at z_j = 1 + 1e-3 1.3^j, half
+/// Chebyshev polynomials; both QRs' residual norms equal to 3e-16) and, in an earlier
+/// version of that test, three runs on Chebyshev columns only:
+///
+/// | rows x columns | frames: faer, us | own, us | ratio | Chebyshev: faer, us | own, us | ratio |
+/// |---|---|---|---|---|---|---|
+/// | 67 x 24 | 56 .. 63 | 22 .. 23 | 2.5 .. 2.8 | 45 .. 46 | 21 | 2.2 |
+/// | 100 x 36 | 118 .. 123 | 61 | 1.9 .. 2.0 | 89 .. 91 | 57 .. 58 | 1.5 .. 1.6 |
+/// | 125 x 45 | 191 .. 199 | 108 .. 111 | 1.8 | 138 .. 144 | 101 .. 103 | 1.4 |
+/// | 154 x 55 | 277 .. 279 | 184 .. 188 | 1.5 | 219 .. 238 | 174 .. 175 | 1.25 .. 1.37 |
+/// | 173 x 62 | 376 .. 377 | 260 .. 266 | 1.4 .. 1.45 | 305 .. 332 | 253 .. 262 | 1.19 .. 1.27 |
+/// | 184 x 66 | 449 .. 465 | 331 .. 334 | 1.35 .. 1.4 | 359 .. 388 | 307 .. 316 | 1.16 .. 1.23 |
+/// | 201 x 72 | 531 .. 540 | 432 .. 436 | 1.23 | 412 .. 453 | 389 .. 418 | 1.06 .. 1.08 |
+/// | 224 x 80 | 636 .. 734 | 507 .. 585 | 1.25 | 538 .. 582 | 495 .. 521 | 1.05 .. 1.18 |
+/// | 260 x 93 | 860 .. 903 | 777 .. 825 | 1.1 | 713 .. 769 | 756 .. 781 | 0.94 .. 0.98 |
+///
+/// (faer's blocked updates catch up near 90 columns.) Whole answers of `coupled::solve_to`
+/// on the 12 scenes of `examples/support::scene_materials` (thread CPU time, the two
+/// alternated, minima of 5 rounds of at least 0.1 s; faer's time over the own's, the
+/// crossover at 64 in two runs and at 96 in one, on the shared machine): c to 1e-10 and
+/// tractions to 1e-10, median ratio 1.09 .. 1.12 (the spectral scenes 0.94 .. 1.22, 9 of
+/// 10 above 1.07 in each run); tractions to 1e-8, median 1.00 .. 1.01 (0.84 .. 1.31: there
+/// the answers come mostly from [`constrained_nested`], already the own QR). The answers
+/// were the same to the last bit on those scenes (c and traction distances 0); COUPLED at
+/// c to 1e-13 (the fretting solvers' normal load) moved c by 2e-17 at the ply.
+const OWN_QR_COLUMNS: usize = 80;
+
 /// [`constrained`] for two nested column sets at once: the first `inner` columns (the
 /// constraints' pivots among the first `pivot_cols <= inner` of them), and all `cols`. One
 /// Householder QR serves both ([`nested_qr_solve`]): its pivots are sought among the inner
@@ -374,5 +438,100 @@ mod tests {
             resid(&xf2),
             best
         );
+    }
+
+    /// Thread CPU time in seconds (CLOCK_THREAD_CPUTIME_ID = 3 on Linux).
+    fn cpu_seconds() -> f64 {
+        #[repr(C)]
+        struct Timespec {
+            sec: i64,
+            nsec: i64,
+        }
+        unsafe extern "C" {
+            fn clock_gettime(clock: i32, out: *mut Timespec) -> i32;
+        }
+        let mut t = Timespec { sec: 0, nsec: 0 };
+        // SAFETY: clock_gettime writes one timespec to a valid pointer.
+        let rc = unsafe { clock_gettime(3, &mut t) };
+        assert_eq!(rc, 0, "clock_gettime");
+        t.sec as f64 + 1e-9 * t.nsec as f64
+    }
+
+    /// [`OWN_QR_COLUMNS`]' table: [`constrained`] (faer's pivoted QR) against
+    /// [`constrained_own`], thread CPU time, alternated, minima.
+    /// `cargo test --release --lib own_qr_crossover -- --ignored --nocapture`
+    #[test]
+    #[ignore]
+    fn own_qr_crossover() {
+        let mut state: u64 = 777;
+        let mut next = move || {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (state >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+        };
+        for n in [24, 36, 45, 55, 62, 66, 72, 80, 93] {
+            let m = (2.8 * n as f64) as usize;
+            // the frames' shape at m perturbed Chebyshev points x: half the columns
+            // Chebyshev polynomials, half poles 1/(z_j - x), z_j = 1 + 1e-3 1.3^j (clustered,
+            // near-dependent), sigma's column random; columns scaled to unit norm
+            let mut a = vec![0.0; m * n];
+            let poles = (n - 1) / 2;
+            for i in 0..m {
+                let th = std::f64::consts::PI * (i as f64 + 0.5 + 0.1 * next()) / m as f64;
+                for j in 0..n - 1 {
+                    a[i * n + j] = if j < poles {
+                        1.0 / (1.0 + 1e-3 * 1.3f64.powi(j as i32) - th.cos())
+                    } else {
+                        ((j - poles) as f64 * th).cos()
+                    };
+                }
+                a[i * n + n - 1] = next();
+            }
+            for j in 0..n {
+                let norm = (0..m).map(|i| a[i * n + j].powi(2)).sum::<f64>().sqrt();
+                (0..m).for_each(|i| a[i * n + j] /= norm);
+            }
+            let b = vec![0.0; m];
+            let cons: Vec<(Vec<f64>, f64)> = (0..3)
+                .map(|k| {
+                    let mut row: Vec<f64> = (0..n).map(|_| next()).collect();
+                    row[n - 1] = 0.0;
+                    (row, if k == 0 { 1.0 } else { 0.0 })
+                })
+                .collect();
+            let reps = (2_000_000 / (m * n * n)).max(3);
+            let time = |own: bool| {
+                let solve = if own { constrained_own } else { constrained };
+                let t = cpu_seconds();
+                for _ in 0..reps {
+                    std::hint::black_box(solve(&a, n, &b, cons.clone(), n - 1).unwrap());
+                }
+                (cpu_seconds() - t) / reps as f64
+            };
+            let (mut tf, mut to) = (f64::INFINITY, f64::INFINITY);
+            for _ in 0..7 {
+                tf = tf.min(time(false));
+                to = to.min(time(true));
+            }
+            let xf = constrained(&a, n, &b, cons.clone(), n - 1).unwrap();
+            let xo = constrained_own(&a, n, &b, cons.clone(), n - 1).unwrap();
+            // the residual norms (the near-dependent columns leave the coefficients free)
+            let resid = |x: &[f64]| {
+                a.chunks_exact(n)
+                    .zip(&b)
+                    .map(|(r, bi)| (dot(r, x) - bi).powi(2))
+                    .sum::<f64>()
+                    .sqrt()
+            };
+            println!(
+                "| {m} x {n} | {:.0} | {:.0} | {:.2} | {:.3e} | {:.3e} |",
+                1e6 * tf,
+                1e6 * to,
+                tf / to,
+                resid(&xf),
+                resid(&xo)
+            );
+        }
     }
 }

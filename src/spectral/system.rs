@@ -14,7 +14,7 @@
 
 use crate::error::{Error, Result};
 use crate::numerics::jacobi_transform::{JacobiFamily, Point};
-use crate::numerics::lstsq::{ConstrainedFailure, constrained, constrained_nested};
+use crate::numerics::lstsq::{ConstrainedFailure, constrained_nested, constrained_sized};
 
 use crate::numerics::bonded::{Bonded, MAX_DEGREE};
 use faer::complex::Complex;
@@ -634,7 +634,7 @@ impl Assembled {
     /// way), so the pivoted QR at once, here and in [`Assembled::solve_pair`].
     fn solve(&self) -> Result<Fixed> {
         let cols = self.basis.len() + 1;
-        let x = constrained(
+        let x = constrained_sized(
             &self.a,
             cols,
             &vec![0.0; self.rows],
