@@ -175,14 +175,31 @@ fn resolved_edge_zone_is_approached_by_the_lcp_history() {
     assert!(m.c_error < 1e-10 && m.traction_error < 1e-8);
 }
 
+/// Largest relative residual of (M1)-(M2) between collocation points, per unit of the
+/// ladder's traction estimate, that [`equilibrium_residuals_and_inequalities`] accepts.
+/// Measured ratios (residual / estimate) over 18 ladders at the ply, Q = 0.6 mu P (c
+/// tolerance 1e-10, 1e-8 and 1e-7, stopping at levels 6, 3-4 and 3-4; the normal load's c
+/// shifted by 0, +-2e-15, +-5e-15 and 1e-14): 0.007 .. 2.7 (1.7 at most at the test's
+/// tolerance 1e-10, residuals 2e-11 .. 1.1e-9 against estimates 3e-10 .. 3e-9; at the
+/// looser ones residuals up to 5.8e-7, the fixed 1e-7 this test had); at b* = 0.9, mu~ = 1
+/// over the same 18: 0.002 .. 0.05. 10 leaves a factor 3.7 above the largest.
+const RESIDUAL_PER_ESTIMATE: f64 = 10.0;
+
 /// int p = 1 and int q = Q/P by a quadrature of the returned tractions (not the bases'
 /// moments); the residuals of (M1) and (M2) at points midway between collocation points;
 /// p > 0 and |q| <= mu p; slip since the normal load with the sign of its zone's friction
 /// (q = -mu p sgn(slip), docs/theory_tangential.md (T5)).
+///
+/// The residuals between points are the level's own error, which the ladder estimates by
+/// the traction distance to the level before (`traction_error`): they are bounded by
+/// [`RESIDUAL_PER_ESTIMATE`] times that estimate, not by a fixed number: at the ply the
+/// residual of the answer's level moved from 2e-11 to 1.1e-9 as the normal load's c moved
+/// by -5e-15 .. 1e-14 (the size of the move a change of COUPLED's QR makes), and the
+/// estimate with it (see the constant).
 #[test]
 fn equilibrium_residuals_and_inequalities() {
-    for (k, qp, res_tol) in [
-        (ply(), 0.18, 1e-7),
+    for (k, qp) in [
+        (ply(), 0.18),
         (
             Coupling {
                 bp: 0.9,
@@ -190,7 +207,6 @@ fn equilibrium_residuals_and_inequalities() {
                 mu: 1.0,
             },
             0.3,
-            1e-9,
         ),
     ] {
         let m = monotonic(&k, qp, 1e-10, 1e-6).unwrap();
@@ -215,7 +231,12 @@ fn equilibrium_residuals_and_inequalities() {
             let (_, hq0) = normal.hilbert_at(&ln);
             hq0 + k.bq * p0
         });
-        assert!(worst < res_tol, "largest relative residual {worst:e}");
+        let res_tol = RESIDUAL_PER_ESTIMATE * m.traction_error;
+        assert!(
+            worst < res_tol,
+            "largest relative residual {worst:e}, traction estimate {:e}",
+            m.traction_error
+        );
         let (w1, c2) = m.stick_set();
         for f in [0.1, 0.5, 0.9] {
             let opx = w1 * f;
