@@ -447,7 +447,9 @@ pub(crate) fn unload_level<D: Start + ?Sized>(
             if lw.exp() < W1_MIN || la.exp() < W1_MIN {
                 return Err(Error::NoConvergence(format!(
                     "exact unloading: an edge zone went below {W1_MIN:e}, thinner than the \
-                     bases resolve"
+                     bases resolve (Newton's step to 1 + a1 = {:e}, 1 - a2 = {:e})",
+                    la.exp(),
+                    lw.exp()
                 )));
             }
             let last = (la.exp() * damp * d_la)

@@ -265,9 +265,23 @@ fn goodman_reloading_matches_the_closed_form() {
     }
 }
 
-/// The ply (Q* = 0.6 mu P) reloaded from -Q* to +Q*: the three-zone answer is refused (its
-/// zone at +1 slips against its friction, section 15). Loose tolerances, so that the ladder
-/// stops early and the answer reaches the admissibility check.
+/// The ply (Q* = 0.6 mu P) reloaded from -Q* to +Q*: there is no three-zone answer (its
+/// zone at +1 slips against its friction, section 15), and the reloading is refused. Loose
+/// tolerances, so that the ladder stops early.
+///
+/// Which refusal comes first is not a property of the problem but of where the search for
+/// the missing root ends, and that moves with the data at rounding level. Measured on this
+/// scene: the unloaded state to (1e-8, 1e-5) gave NoAdmissibleSolution (the zone at +1,
+/// 8.5e-7 wide, slips backwards: -4.1e-7 at 1 - x = 7.6e-7); the same state to (1e-9,
+/// 1e-5), NoConvergence (a Newton step took the zone at -1 to 7.0e-8, below `W1_MIN`, and
+/// the one at +1 to 7.2e-3); the reloading's
+/// traction tolerance 1e-2 in place of 0.1, NoConvergence (levels 1-8 did not agree); and
+/// COUPLED's own QR at its level-1 solves (the normal load's c moved by 2e-17),
+/// NoConvergence (a Newton step took the zone at -1 to 7.8e-8 and the one at +1 to 0.08).
+/// So the test accepts the refusals that reload.rs documents for this branch, each only
+/// for its corner cause: NoAdmissibleSolution for the zone at +1 (the mirrored frame's
+/// leading zone), NoConvergence for an edge zone thinner than the bases resolve or levels
+/// that do not agree. An answer, or any other error, fails.
 #[test]
 fn ply_corner_is_refused() {
     let k = ply();
@@ -275,15 +289,17 @@ fn ply_corner_is_refused() {
     let m = Arc::new(monotonic(&k, q_star, 1e-10, 1e-6).unwrap());
     let u = Arc::new(unload(&m, -q_star, 1e-8, 1e-5).unwrap());
     let mirror = Arc::new(Mirror { inner: u.clone() });
-    let r = reload(&mirror, q_star, 1e-5, 0.1);
-    if let Err(e) = &r {
-        println!("{e}");
+    match reload(&mirror, q_star, 1e-5, 0.1) {
+        Err(Error::NoAdmissibleSolution(msg)) => {
+            assert!(msg.contains("the leading zone"), "{msg}")
+        }
+        Err(Error::NoConvergence(msg)) => assert!(
+            msg.contains("thinner than the bases resolve") || msg.contains("did not agree"),
+            "{msg}"
+        ),
+        Err(e) => panic!("refused for another reason: {e}"),
+        Ok(r) => panic!("answered: stick set {:?}", r.stick_set()),
     }
-    assert!(
-        matches!(r, Err(Error::NoAdmissibleSolution(_))),
-        "{:?}",
-        r.map(|r| r.stick_set())
-    );
 }
 
 /// The ply's reloading at +Q* level by level from the root near the grid's start (section
