@@ -120,32 +120,36 @@ fn constrained_own(
 /// Most columns for which [`constrained_sized`] takes its pivoted QR from [`nested_qr_solve`]
 /// (one group), not from faer's `col_piv_qr`. Measured (`own_qr_crossover`: thread CPU time
 /// per solve with the elimination of three constraints, the two alternated, minima of 7;
-/// rows 2.8 per column as in the spectral systems), two runs, on matrices of the frames'
-/// shape (half the columns poles 1/(z_j - x) clustered at z_j = 1 + 1e-3 1.3^j, half
-/// Chebyshev polynomials; both QRs' residual norms equal to 3e-16) and, in an earlier
-/// version of that test, three runs on Chebyshev columns only:
+/// two runs) on matrices of the frames' shape (half the columns poles 1/(z_j - x) clustered
+/// at z_j = 1 + 1e-3 1.3^j, half Chebyshev polynomials, at perturbed Chebyshev points; both
+/// QRs' residual norms equal to rounding), at the spectral systems' 1.8 rows per column and
+/// at 2.8 (about the 3.0 they had before):
 ///
-/// | rows x columns | frames: faer, us | own, us | ratio | Chebyshev: faer, us | own, us | ratio |
+/// | columns | 1.8 rows per column: faer, us | own, us | ratio | 2.8: faer, us | own, us | ratio |
 /// |---|---|---|---|---|---|---|
-/// | 67 x 24 | 56 .. 63 | 22 .. 23 | 2.5 .. 2.8 | 45 .. 46 | 21 | 2.2 |
-/// | 100 x 36 | 118 .. 123 | 61 | 1.9 .. 2.0 | 89 .. 91 | 57 .. 58 | 1.5 .. 1.6 |
-/// | 125 x 45 | 191 .. 199 | 108 .. 111 | 1.8 | 138 .. 144 | 101 .. 103 | 1.4 |
-/// | 154 x 55 | 277 .. 279 | 184 .. 188 | 1.5 | 219 .. 238 | 174 .. 175 | 1.25 .. 1.37 |
-/// | 173 x 62 | 376 .. 377 | 260 .. 266 | 1.4 .. 1.45 | 305 .. 332 | 253 .. 262 | 1.19 .. 1.27 |
-/// | 184 x 66 | 449 .. 465 | 331 .. 334 | 1.35 .. 1.4 | 359 .. 388 | 307 .. 316 | 1.16 .. 1.23 |
-/// | 201 x 72 | 531 .. 540 | 432 .. 436 | 1.23 | 412 .. 453 | 389 .. 418 | 1.06 .. 1.08 |
-/// | 224 x 80 | 636 .. 734 | 507 .. 585 | 1.25 | 538 .. 582 | 495 .. 521 | 1.05 .. 1.18 |
-/// | 260 x 93 | 860 .. 903 | 777 .. 825 | 1.1 | 713 .. 769 | 756 .. 781 | 0.94 .. 0.98 |
+/// | 24 | 62 .. 63 | 25 .. 27 | 2.3 .. 2.5 | 74 .. 85 | 38 .. 39 | 2.0 .. 2.2 |
+/// | 36 | 123 .. 124 | 66 .. 68 | 1.8 .. 1.9 | 174 .. 176 | 98 .. 100 | 1.7 .. 1.8 |
+/// | 45 | 198 | 113 .. 115 | 1.7 .. 1.8 | 281 .. 282 | 175 .. 180 | 1.6 |
+/// | 55 | 279 .. 286 | 194 .. 199 | 1.44 | 405 .. 421 | 307 .. 308 | 1.3 .. 1.4 |
+/// | 62 | 346 .. 371 | 265 .. 277 | 1.3 | 548 .. 552 | 415 .. 418 | 1.3 |
+/// | 66 | 403 .. 408 | 315 .. 320 | 1.3 | 575 .. 602 | 477 .. 495 | 1.2 |
+/// | 72 | 494 .. 509 | 397 .. 405 | 1.25 | 707 .. 735 | 596 .. 619 | 1.19 |
+/// | 80 | 622 | 537 .. 543 | 1.15 | 889 .. 896 | 796 .. 816 | 1.09 .. 1.13 |
+/// | 93 | 843 .. 851 | 804 .. 808 | 1.04 .. 1.06 | 1232 .. 1244 | 1218 .. 1223 | 1.01 .. 1.02 |
+/// | 110 | 1318 .. 1324 | 1261 .. 1294 | 1.02 .. 1.05 | 1756 .. 1801 | 1895 .. 1970 | 0.91 .. 0.93 |
 ///
-/// (faer's blocked updates catch up near 90 columns.) Whole answers of `coupled::solve_to`
-/// on the 12 scenes of `examples/support::scene_materials` (thread CPU time, the two
-/// alternated, minima of 5 rounds of at least 0.1 s; faer's time over the own's, the
-/// crossover at 64 in two runs and at 96 in one, on the shared machine): c to 1e-10 and
-/// tractions to 1e-10, median ratio 1.09 .. 1.12 (the spectral scenes 0.94 .. 1.22, 9 of
-/// 10 above 1.07 in each run); tractions to 1e-8, median 1.00 .. 1.01 (0.84 .. 1.31: there
-/// the answers come mostly from [`constrained_nested`], already the own QR). The answers
-/// were the same to the last bit on those scenes (c and traction distances 0); COUPLED at
-/// c to 1e-13 (the fretting solvers' normal load) moved c by 2e-17 at the ply.
+/// (faer's blocked updates catch up from about 90 columns; on Chebyshev columns alone, at
+/// 2.8 rows per column, the own QR was 2.2, 1.4, 1.06 .. 1.18 and 0.94 .. 0.98 times faster
+/// at 24, 45, 72-80 and 93 columns.) Whole answers of `coupled::solve_to` on the 12 scenes
+/// of `examples/support::scene_materials` (thread CPU time, the two alternated, minima of 5
+/// rounds of at least 0.1 s; faer's time over the own's; one run at this crossover, on the
+/// shared machine): c and tractions to 1e-10, median 1.12, the 10 spectral scenes 1.08 ..
+/// 1.22; tractions to 1e-8, median 1.04, the spectral scenes 1.00 .. 1.42 (there the
+/// answers come mostly from [`constrained_nested`], already the own QR). 10 of the 12
+/// answers were the same to the bit; the ply and kappa = 0.4 at mu = 1, tractions to 1e-8,
+/// moved by 8e-12 and 2e-13 in c, 1.4e-11 and 4e-13 in the tractions. (With 3.0 rows per
+/// unknown, before the spectral systems' 1.8, the crossover at 64 and at 96 had given
+/// medians 1.09 .. 1.12 and 1.00 .. 1.01.)
 const OWN_QR_COLUMNS: usize = 80;
 
 /// [`constrained`] for two nested column sets at once: the first `inner` columns (the
@@ -470,8 +474,12 @@ mod tests {
                 .wrapping_add(1442695040888963407);
             (state >> 11) as f64 / (1u64 << 53) as f64 - 0.5
         };
-        for n in [24, 36, 45, 55, 62, 66, 72, 80, 93] {
-            let m = (2.8 * n as f64) as usize;
+        // rows per column: the spectral systems' 1.8, and the 2.8 they had before
+        for (per, n) in [1.8, 2.8]
+            .into_iter()
+            .flat_map(|per| [24, 36, 45, 55, 62, 66, 72, 80, 93, 110].map(|n| (per, n)))
+        {
+            let m = (per * n as f64) as usize;
             // the frames' shape at m perturbed Chebyshev points x: half the columns
             // Chebyshev polynomials, half poles 1/(z_j - x), z_j = 1 + 1e-3 1.3^j (clustered,
             // near-dependent), sigma's column random; columns scaled to unit norm
