@@ -122,8 +122,9 @@ fn constrained_own(
 /// per solve with the elimination of three constraints, the two alternated, minima of 7;
 /// two runs) on matrices of the frames' shape (half the columns poles 1/(z_j - x) clustered
 /// at z_j = 1 + 1e-3 1.3^j, half Chebyshev polynomials, at perturbed Chebyshev points; both
-/// QRs' residual norms equal to rounding), at the spectral systems' 1.8 rows per column and
-/// at 2.8 (about the 3.0 they had before):
+/// QRs' residual norms equal to rounding), at 1.8 rows per column (measured while the
+/// spectral systems had 1.8, a change since reverted) and at 2.8 (about the spectral
+/// systems' 3.0):
 ///
 /// | columns | 1.8 rows per column: faer, us | own, us | ratio | 2.8: faer, us | own, us | ratio |
 /// |---|---|---|---|---|---|---|
@@ -143,12 +144,13 @@ fn constrained_own(
 /// at 24, 45, 72-80 and 93 columns.) Whole answers of `coupled::solve_to` on the 12 scenes
 /// of `examples/support::scene_materials` (thread CPU time, the two alternated, minima of 5
 /// rounds of at least 0.1 s; faer's time over the own's; one run at this crossover, on the
-/// shared machine): c and tractions to 1e-10, median 1.12, the 10 spectral scenes 1.08 ..
+/// shared machine, with the spectral systems at 1.8 rows per unknown): c and tractions to
+/// 1e-10, median 1.12, the 10 spectral scenes 1.08 ..
 /// 1.22; tractions to 1e-8, median 1.04, the spectral scenes 1.00 .. 1.42 (there the
 /// answers come mostly from [`constrained_nested`], already the own QR). 10 of the 12
 /// answers were the same to the bit; the ply and kappa = 0.4 at mu = 1, tractions to 1e-8,
 /// moved by 8e-12 and 2e-13 in c, 1.4e-11 and 4e-13 in the tractions. (With 3.0 rows per
-/// unknown, before the spectral systems' 1.8, the crossover at 64 and at 96 had given
+/// unknown, the spectral systems' rows now, the crossover at 64 and at 96 had given
 /// medians 1.09 .. 1.12 and 1.00 .. 1.01.)
 const OWN_QR_COLUMNS: usize = 80;
 

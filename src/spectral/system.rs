@@ -449,44 +449,9 @@ impl Basis {
 }
 
 /// Chebyshev points per unknown in each zone (rows: two per stick point, one per slip point;
-/// with the geometric clusters of [`super::points::collocation`] about 1.8 rows per unknown
-/// in all, docs/theory_spectral.md (C1)), and twice these below [`DENSE_BELOW_G`].
-///
-/// Measured on the reduced plane (table coordinates, the served points with b* >= 0.25 and
-/// 1 - c >= 1e-4; the grid of `coupled::tests::spectral_agrees_with_the_panels_on_a_grid`;
-/// the largest distance to the panels at (1e-12, 1e-10) over the sum of both estimates;
-/// thread CPU time per answer, the median, the variants alternated in one run on the shared
-/// 2-core machine under load):
-///
-/// | stick, slip points per unknown | rows per unknown (12 scenes) | 120 points, (1e-10, 1e-8): median, c, tractions | the same at (1e-10, 1e-10) | 53 x 53 grid at (1e-10, 1e-10): answered of 877 |
-/// |---|---|---|---|---|
-/// | 0.6, 1.0 | 3.0 | 2.0-2.1 ms, 0.37, 0.78 | 3.5-4.2 ms, 0.43, 0.80 | 765 |
-/// | 0.45, 0.75 | | | 3.3 ms, 0.62, 0.87 | |
-/// | 0.3, 0.5 | 1.8 | 1.3-1.5 ms, 0.18, 0.49 | 2.3-2.5 ms, 0.39, 0.58 | 745 |
-/// | 0.2, 0.35 | | 1.3 ms, 0.17, 0.50 | | |
-/// | 0.2, 0.35, clusters at 2 per decade | | c 16 times the estimates | | |
-///
-/// At (1e-10, 1e-8) the 954 points of the 53 x 53 grid all answer and agree with the panels
-/// at 0.3, 0.5 as at 0.6, 1.0, and so do the thin slip zones and small-g grids of the slow
-/// tier (`coupled::tests`).
-const STICK_POINTS: f64 = 0.3;
-const SLIP_POINTS: f64 = 0.5;
-
-/// Below this edge exponent (large friction, mu~ > 16 / b* roughly) the points of
-/// [`STICK_POINTS`] and [`SLIP_POINTS`] are doubled: there the rounding noise of the slip
-/// columns, whose q is mu~ times their p, sets the traction floor near 1e-10
-/// (docs/theory_spectral.md section 5), and of the 23 points of the 877 above that the fewer
-/// rows lost at (1e-10, 1e-10), 20 had g < 0.015 (the other three: g = 0.12 and 0.16 at
-/// 1 - c = 2e-4 .. 3e-4, g = 0.45 at 3.5e-2). With the doubled rows below g = 0.02, 762
-/// answered; of the 77 thin slip zones and small b* of the same grid, 61 (50 with the rows
-/// of 0.6, 1.0 everywhere).
-const DENSE_BELOW_G: f64 = 0.02;
-
-/// Chebyshev points per unknown in the stick and slip zones at the edge exponent g.
-fn points_per_unknown(g: f64) -> (f64, f64) {
-    let dense = if g < DENSE_BELOW_G { 2.0 } else { 1.0 };
-    (dense * STICK_POINTS, dense * SLIP_POINTS)
-}
+/// about 2.6 rows per unknown in all with the clusters, docs/theory_spectral.md (C1)).
+const STICK_POINTS: f64 = 0.6;
+const SLIP_POINTS: f64 = 1.0;
 
 /// The solution of the fixed-c system.
 #[derive(Clone, Debug)]
@@ -539,12 +504,11 @@ impl Assembled {
         let basis = Basis::new(k, c, w, sizes);
         let n = basis.len();
         let cols = n + 1;
-        let (stick_points, slip_points) = points_per_unknown(k.g);
         let (stick, slip) = collocation(
             c,
             w,
-            (stick_points * cols as f64).ceil() as usize,
-            (slip_points * cols as f64).ceil() as usize,
+            (STICK_POINTS * cols as f64).ceil() as usize,
+            (SLIP_POINTS * cols as f64).ceil() as usize,
         );
         let rows = 2 * stick.len() + slip.len();
         let mut a = vec![0.0; rows * cols];
