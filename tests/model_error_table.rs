@@ -160,28 +160,37 @@ fn empirical_bound_holds_at_a_few_points() {
     bound_holds_at(12, 20_261_126);
 }
 
-/// The bound on c at `n` random points from `seed`.
+/// The bound on c at `n` random points from `seed` (drawn in turn, solved over the machine's
+/// cores).
 fn bound_holds_at(n: usize, seed: u64) {
     let mut rng = fastrand::Rng::with_seed(seed);
-    let mut compared = [0usize; 2];
-    let mut no_bound = [0usize; 2];
-    let mut no_reference = 0;
-    let mut worst = [(0.0_f64, 0.0, 0.0); 2];
-    for _ in 0..n {
-        let b = off_grid(&mut rng, &B_STAR);
-        let mu = 10f64.powf(off_grid(&mut rng, &LOG10_MU));
+    let points: Vec<(f64, f64)> = (0..n)
+        .map(|_| {
+            let b = off_grid(&mut rng, &B_STAR);
+            (b, 10f64.powf(off_grid(&mut rng, &LOG10_MU)))
+        })
+        .collect();
+    // per point: None without a reference, else per approximation its error and bound
+    let errors = support::parallel::map(&points, |&(b, mu)| {
         let k = Coupling { bp: b, bq: b, mu };
-        let Ok(exact) = coupled::solve_to(&k, REFERENCE_TOL, f64::INFINITY) else {
-            no_reference += 1;
-            continue;
-        };
+        let exact = coupled::solve_to(&k, REFERENCE_TOL, f64::INFINITY).ok()?;
         let edges = [
             (Approximation::Goodman, goodman::solve(&k).unwrap().edge()),
             (Approximation::Spence, spence::solve(&k).unwrap().edge()),
         ];
-        for (n, (a, approx)) in edges.into_iter().enumerate() {
-            let err = approx.distance(exact.edge());
-            let Some(bd) = bound(a, &k) else {
+        Some(edges.map(|(a, approx)| (a, approx.distance(exact.edge()), bound(a, &k))))
+    });
+    let mut compared = [0usize; 2];
+    let mut no_bound = [0usize; 2];
+    let mut no_reference = 0;
+    let mut worst = [(0.0_f64, 0.0, 0.0); 2];
+    for (&(b, mu), errors) in points.iter().zip(errors) {
+        let Some(errors) = errors else {
+            no_reference += 1;
+            continue;
+        };
+        for (n, (a, err, bd)) in errors.into_iter().enumerate() {
+            let Some(bd) = bd else {
                 no_bound[n] += 1;
                 continue;
             };
@@ -225,26 +234,30 @@ fn empirical_traction_bound_holds_at_a_few_points() {
     traction_bound_holds_at(12, 20_261_126);
 }
 
-/// The traction bound at `n` random points from `seed`.
+/// The traction bound at `n` random points from `seed` (drawn in turn, solved over the
+/// machine's cores).
 fn traction_bound_holds_at(n: usize, seed: u64) {
     let mut rng = fastrand::Rng::with_seed(seed);
     let columns: Vec<f64> = std::iter::once(LOG10_MU[0] - 1.0).chain(LOG10_MU).collect();
-    let mut worst = [(0.0_f64, 0.0, 0.0, 0.0); 2];
-    let mut compared = [0usize; 2];
-    for i in 0..n {
-        let b = off_grid(&mut rng, &B_STAR);
-        let mu_tilde = 10f64.powf(off_grid(&mut rng, &columns));
-        // reduced scenes (delta = 1) and every third one with delta = 0.3 or 3 (E = 1,
-        // kappa = 1: b* = (1 - nu) / 2)
-        let delta = [1.0, 1.0, 0.3, 1.0, 1.0, 3.0][i % 6];
+    let points: Vec<(f64, f64, f64)> = (0..n)
+        .map(|i| {
+            let b = off_grid(&mut rng, &B_STAR);
+            let mu_tilde = 10f64.powf(off_grid(&mut rng, &columns));
+            // reduced scenes (delta = 1) and every third one with delta = 0.3 or 3 (E = 1,
+            // kappa = 1: b* = (1 - nu) / 2)
+            (b, mu_tilde, [1.0, 1.0, 0.3, 1.0, 1.0, 3.0][i % 6])
+        })
+        .collect();
+    // per point and method: the traction error and its estimate, None where either is missing
+    let errors = support::parallel::map(&points, |&(b, mu_tilde, delta)| {
         let m = Material::effective(1.0, 1.0 - 2.0 * b, delta, 1.0).unwrap();
         let k = m.coupling(1.0);
         let mu = mu_tilde * (k.bq / k.bp).sqrt();
         let k = m.coupling(mu);
         let Ok(exact) = coupled::solve_to(&k, REFERENCE_TOL, REFERENCE_TRACTION_TOL) else {
-            continue;
+            return [None, None];
         };
-        for (n, method) in [Method::Goodman, Method::Spence].into_iter().enumerate() {
+        [Method::Goodman, Method::Spence].map(|method| {
             let mut contact = Contact::new(m);
             contact.set_friction(mu).unwrap();
             contact.set_method(method);
@@ -252,10 +265,16 @@ fn traction_bound_holds_at(n: usize, seed: u64) {
                 .solve()
                 .unwrap_or_else(|e| panic!("{method:?} at {k:?}: {e}"));
             let est = s.traction_error_estimate();
-            if est.is_infinite() {
+            (!est.is_infinite()).then(|| (method, traction_distance(s.profile(), &exact), est))
+        })
+    });
+    let mut worst = [(0.0_f64, 0.0, 0.0, 0.0); 2];
+    let mut compared = [0usize; 2];
+    for (&(b, mu_tilde, delta), errors) in points.iter().zip(errors) {
+        for (n, e) in errors.into_iter().enumerate() {
+            let Some((method, err, est)) = e else {
                 continue;
-            }
-            let err = traction_distance(s.profile(), &exact);
+            };
             assert!(
                 err <= est,
                 "{method:?} at b* = {b}, mu~ = {mu_tilde}, delta = {delta}: traction error \

@@ -15,6 +15,9 @@ use std::panic::{AssertUnwindSafe, catch_unwind};
 use std::sync::OnceLock;
 
 use orthoslip::model_error::{self, Approximation};
+
+#[path = "../examples/support/parallel.rs"]
+mod parallel;
 use orthoslip::{
     Contact, Coupling, Error, Material, Method, Profile, StickEdge, coupled, goodman, lcp, spence,
 };
@@ -317,7 +320,8 @@ fn estimate(s: Solver, k: &Coupling, p: &dyn Profile) -> Option<f64> {
 }
 
 /// The reference stick edges at the points of `grid` (COUPLED at [`REFERENCE_TOL`]),
-/// computed once for the four estimate checks that share them.
+/// computed once for the four estimate checks that share them, spread over the machine's
+/// cores.
 fn grid_references(grid: Grid) -> &'static [((f64, f64), Option<StickEdge>)] {
     type Refs = OnceLock<Vec<((f64, f64), Option<StickEdge>)>>;
     static DIAGONAL: Refs = OnceLock::new();
@@ -327,35 +331,33 @@ fn grid_references(grid: Grid) -> &'static [((f64, f64), Option<StickEdge>)] {
         Grid::Full => &FULL,
     };
     cache.get_or_init(|| {
-        grid.points()
-            .into_iter()
-            .map(|(b, mu)| {
-                let k = Coupling { bp: b, bq: b, mu };
-                (
-                    (b, mu),
-                    coupled::solve(&k, REFERENCE_TOL).ok().map(|r| r.edge()),
-                )
-            })
-            .collect()
+        parallel::map(&grid.points(), |&(b, mu)| {
+            let k = Coupling { bp: b, bq: b, mu };
+            (
+                (b, mu),
+                coupled::solve(&k, REFERENCE_TOL).ok().map(|r| r.edge()),
+            )
+        })
     })
 }
 
 /// Method `s`'s estimate against its true error at each (b*, mu~) of `grid` where it, its
-/// estimate and the reference exist: (label, estimate, true error).
+/// estimate and the reference exist: (label, estimate, true error). The points are spread
+/// over the machine's cores.
 fn estimates_against_reference(s: Solver, grid: Grid) -> Vec<(String, f64, f64)> {
-    grid_references(grid)
-        .iter()
-        .filter_map(|&((b, mu), reference)| {
-            let k = Coupling { bp: b, bq: b, mu };
-            let reference = reference?;
-            let p = solve(s, &k, COUPLED_TOL).ok()?;
-            Some((
-                format!("b* = {b}, mu~ = {mu}"),
-                estimate(s, &k, p.as_ref())?,
-                p.edge().distance(reference),
-            ))
-        })
-        .collect()
+    parallel::map(grid_references(grid), |&((b, mu), reference)| {
+        let k = Coupling { bp: b, bq: b, mu };
+        let reference = reference?;
+        let p = solve(s, &k, COUPLED_TOL).ok()?;
+        Some((
+            format!("b* = {b}, mu~ = {mu}"),
+            estimate(s, &k, p.as_ref())?,
+            p.edge().distance(reference),
+        ))
+    })
+    .into_iter()
+    .flatten()
+    .collect()
 }
 
 fn check_bounds(s: Solver, grid: Grid, min_compared: usize) {

@@ -33,7 +33,8 @@
 use super::full_slip::FullSlip;
 use super::large_friction::lagrange;
 use super::{
-    CoupledSolution, Regime, Sensitivity, panel_regimes, panels_at_edge, panels_in_window,
+    CoupledSolution, Regime, Sensitivity, node_solve, panel_regimes, panels_at_edge,
+    panels_in_window,
 };
 use crate::error::{Error, Result};
 use crate::problem::{Coupling, StickEdge};
@@ -97,7 +98,7 @@ fn extrapolated_edge(r: &Coupling, tol: f64, traction_tol: f64) -> Result<(Stick
         let node_tol = (SHARE * tol * node_scale / (scale * spread))
             .min(node_relative(traction_tol) * c_above)
             .min(0.5);
-        let sol = panel_regimes(node, node_tol, f64::INFINITY)?;
+        let sol = node_solve(node, node_tol, f64::INFINITY, panel_regimes)?;
         k[i] = sol.edge.c / node_scale;
         k_error[i] = sol.error / node_scale;
     }
@@ -280,7 +281,9 @@ mod tests {
 
     /// c alone down to the last double below b* = 1 (s = 1.1e-16) and up to mu~ = 1e12: an
     /// answer, 0 < c below the full-slip law 4 (1 - b*^2)^(pi / (2 b* mu~)) (which bounds c
-    /// wherever measured), non-decreasing in mu~.
+    /// wherever measured), non-decreasing in mu~. A friction's nodes asked to the same
+    /// tolerance at another s (their tolerance is set by the relative accuracy of c alone at
+    /// the two smallest s) are solved once (`coupled::tests::memo_node`).
     #[test]
     #[ignore = "slow tier: c alone down to b* = 1 - 1.1e-16 and up to mu~ = 1e12"]
     fn c_alone_up_to_the_last_double_below_one() {

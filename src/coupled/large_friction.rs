@@ -19,7 +19,7 @@
 //! moves by a few per cent from 4 M to infinity (b* = 0.1: 1.4159e-20 at mu~ = 1e3,
 //! 1.3934e-20 at 1e6).
 
-use super::{CoupledSolution, panels_or_auxetic};
+use super::{CoupledSolution, node_solve, panels_or_auxetic};
 use crate::error::Result;
 use crate::field::{Expand, Expansion, fitted_panel, graded_plain};
 use crate::numerics::cauchy::Weight;
@@ -122,7 +122,12 @@ impl LargeFriction {
             .iter()
             .map(|&mu| {
                 let at = Coupling { mu, ..r };
-                panels_or_auxetic(&at, SHARE * tol, SHARE * traction_tol / delta.max(1.0))
+                node_solve(
+                    &at,
+                    SHARE * tol,
+                    SHARE * traction_tol / delta.max(1.0),
+                    panels_or_auxetic,
+                )
             })
             .collect::<Result<Vec<_>>>()?;
         let (edge, error, [quad, line]) = extrapolate_edge(

@@ -1175,6 +1175,24 @@ fn panels_or_auxetic(k: &Coupling, tol: f64, traction_tol: f64) -> Result<Couple
     }
 }
 
+/// A node of the extrapolations in 1/mu~ ([`large_friction`], by [`panels_or_auxetic`]) and
+/// in 1 - b* ([`auxetic`], by [`panel_regimes`]): `solve` at (k, tol, traction_tol).
+fn node_solve(
+    k: &Coupling,
+    tol: f64,
+    traction_tol: f64,
+    solve: fn(&Coupling, f64, f64) -> Result<CoupledSolution>,
+) -> Result<CoupledSolution> {
+    #[cfg(test)]
+    {
+        tests::memo_node(k, tol, traction_tol, solve)
+    }
+    #[cfg(not(test))]
+    {
+        solve(k, tol, traction_tol)
+    }
+}
+
 /// Thin slip zones at large friction: where the near-bonded law's window lies beyond
 /// [`THIN_EXTRAPOLATE`] in lc and g < [`SMALL_G`], the panels' root search is unreliable (b*
 /// = 0.1, mu~ = 1e4: order 22 and 4 min, or no answer; b* = 0.12, mu~ = 2e5: the layouts

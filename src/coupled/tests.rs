@@ -7,6 +7,40 @@ use super::*;
 use crate::numerics::quadrature::{gauss_jacobi, gauss_legendre};
 use std::f64::consts::PI;
 
+/// The test builds' [`node_solve`]: each node of the extrapolations solved once per test
+/// process and handed out again (a node's solve is deterministic: the same coupling and
+/// tolerances give the same solution). The slow tests ask for the same nodes again and again:
+/// `auxetic::tests::c_alone_up_to_the_last_double_below_one` those of each friction at
+/// three b* near 1 (the nodes s = 1e-5 .. 8e-5 are the same, and so are their tolerances where
+/// c's relative accuracy sets them), and
+/// [`thin_slip_zone_at_large_friction`] those of b* = 0.12 at mu~ = 442, 884, 1768, which
+/// `large_friction::tests::thin_extrapolation_continues_the_panels` solves as well. A caller
+/// that finds its node being solved waits for that solve.
+pub(crate) fn memo_node(
+    k: &Coupling,
+    tol: f64,
+    traction_tol: f64,
+    solve: fn(&Coupling, f64, f64) -> Result<CoupledSolution>,
+) -> Result<CoupledSolution> {
+    use std::collections::HashMap;
+    use std::sync::{Arc, Mutex, OnceLock};
+    // per solver and (bp, bq, mu, tol, traction_tol), the node's solve once it has run
+    type Nodes = HashMap<(usize, [u64; 5]), Arc<OnceLock<Result<CoupledSolution>>>>;
+    static NODES: OnceLock<Mutex<Nodes>> = OnceLock::new();
+    let key = (
+        solve as usize,
+        [k.bp, k.bq, k.mu, tol, traction_tol].map(f64::to_bits),
+    );
+    let node = NODES
+        .get_or_init(Default::default)
+        .lock()
+        .unwrap()
+        .entry(key)
+        .or_default()
+        .clone();
+    node.get_or_init(|| solve(k, tol, traction_tol)).clone()
+}
+
 /// Isotropic plane strain, nu = 0.3: bp = bq = (1 - 2 nu) / (2 (1 - nu)) (docs/theory.md (M7), (R1):
 /// A = (1-2nu)(1+nu)/E, B = C = 2(1-nu^2)/(pi E), bp = A / (pi C)).
 fn steel() -> f64 {
@@ -587,7 +621,9 @@ fn thinnest_slip_zone_meets_1e_10() {
 /// Thin slip zones at large friction (b* = 0.12, mu~ = 1e6, g = 2.7e-6, 1 - c = 5.4e-17): the
 /// panels' root search fails there, and the extrapolation in 1/mu~ from the panels at mu~ =
 /// 442, 884 and 1768 meets 1e-10 ([`thin_slip_zone`]: inside the near-bonded law's window,
-/// within 3 sqrt(1 - c) of the bonded tractions). The thinnest such zones, b* = 0.1 (1 - c =
+/// within 3 sqrt(1 - c) of the bonded tractions). Its nodes are those of
+/// `large_friction::tests::thin_extrapolation_continues_the_panels`, solved once per test run
+/// ([`memo_node`]). The thinnest such zones, b* = 0.1 (1 - c =
 /// 1.4e-20, nodes at 530 .. 2122), take 5 minutes on this machine (about 100 s per node):
 /// the stability map checks them, at 1e-10 and against 1e-12, rather than every test run.
 #[test]

@@ -387,7 +387,14 @@ fn stick_edges_converge_at_first_order_in_the_panels() {
 #[ignore = "slow tier: N = 100 .. 800 (60 s in release, measured on 2 shared cores)"]
 fn refinement_table_in_the_panels() {
     let ns = [100, 200, 400, 800];
-    let pts: Vec<[f64; 3]> = ns.iter().map(|&n| refinement_point(n, 5)).collect();
+    // one thread per N: N = 800 takes most of the time, the others run beside it
+    let pts: Vec<[f64; 3]> = std::thread::scope(|scope| {
+        let runs: Vec<_> = ns
+            .iter()
+            .map(|&n| scope.spawn(move || refinement_point(n, 5)))
+            .collect();
+        runs.into_iter().map(|r| r.join().unwrap()).collect()
+    });
     for (j, name) in ["c2(Q*)", "c1(-Q*)", "W1"].iter().enumerate() {
         let v: Vec<f64> = pts.iter().map(|p| p[j]).collect();
         eprintln!("{name}: {v:?} orders {:?}", observed_orders(&v));
