@@ -79,9 +79,7 @@ pub(crate) fn constrained(
     cons: Vec<(Vec<f64>, f64)>,
     pivot_cols: usize,
 ) -> Result<Vec<f64>, ConstrainedFailure> {
-    let e = Elimination::new(a, cols, b, cons, pivot_cols)?;
-    let x = LeastSquares::pivoted().solve(&e.reduced, e.keep.len(), &e.rhs);
-    e.complete(&x)
+    constrained_by(a, cols, b, cons, pivot_cols, false)
 }
 
 /// [`constrained`] with its pivoted QR chosen by size: [`nested_qr_solve`]'s (one group) up
@@ -97,23 +95,27 @@ pub(crate) fn constrained_sized(
     cons: Vec<(Vec<f64>, f64)>,
     pivot_cols: usize,
 ) -> Result<Vec<f64>, ConstrainedFailure> {
-    if cols > OWN_QR_COLUMNS {
-        return constrained(a, cols, b, cons, pivot_cols);
-    }
-    constrained_own(a, cols, b, cons, pivot_cols)
+    constrained_by(a, cols, b, cons, pivot_cols, cols <= OWN_QR_COLUMNS)
 }
 
-/// [`constrained`] with [`nested_qr_solve`]'s pivoted QR (one group) in place of faer's.
-fn constrained_own(
+/// [`constrained`] with the reduced least squares by [`nested_qr_solve`]'s pivoted QR (one
+/// group) where `own`, else by faer's.
+fn constrained_by(
     a: &[f64],
     cols: usize,
     b: &[f64],
     cons: Vec<(Vec<f64>, f64)>,
     pivot_cols: usize,
+    own: bool,
 ) -> Result<Vec<f64>, ConstrainedFailure> {
     let e = Elimination::new(a, cols, b, cons, pivot_cols)?;
     let n = e.keep.len();
-    let [_, x] = nested_qr_solve(&e.reduced, n, &e.rhs, n);
+    let x = if own {
+        let [_, x] = nested_qr_solve(&e.reduced, n, &e.rhs, n);
+        x
+    } else {
+        LeastSquares::pivoted().solve(&e.reduced, n, &e.rhs)
+    };
     e.complete(&x)
 }
 
@@ -465,7 +467,7 @@ mod tests {
     }
 
     /// [`OWN_QR_COLUMNS`]' table: [`constrained`] (faer's pivoted QR) against
-    /// [`constrained_own`], thread CPU time, alternated, minima.
+    /// [`constrained_by`] with our QR, thread CPU time, alternated, minima.
     /// A measurement, not a check (the `measure` feature only, kept out of the tiers):
     /// `cargo test --release --features measure --lib own_qr_crossover -- --ignored --nocapture`
     #[cfg(feature = "measure")]
@@ -515,10 +517,11 @@ mod tests {
                 .collect();
             let reps = (2_000_000 / (m * n * n)).max(3);
             let time = |own: bool| {
-                let solve = if own { constrained_own } else { constrained };
                 let t = cpu_seconds();
                 for _ in 0..reps {
-                    std::hint::black_box(solve(&a, n, &b, cons.clone(), n - 1).unwrap());
+                    std::hint::black_box(
+                        constrained_by(&a, n, &b, cons.clone(), n - 1, own).unwrap(),
+                    );
                 }
                 (cpu_seconds() - t) / reps as f64
             };
@@ -528,7 +531,7 @@ mod tests {
                 to = to.min(time(true));
             }
             let xf = constrained(&a, n, &b, cons.clone(), n - 1).unwrap();
-            let xo = constrained_own(&a, n, &b, cons.clone(), n - 1).unwrap();
+            let xo = constrained_by(&a, n, &b, cons.clone(), n - 1, true).unwrap();
             // the residual norms (the near-dependent columns leave the coefficients free)
             let resid = |x: &[f64]| {
                 a.chunks_exact(n)
