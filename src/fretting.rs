@@ -842,7 +842,7 @@ impl LoadPath {
             Engine::Exact(e) => PathPoint {
                 q_over_p: e.q_over_p(),
                 stick: e.stick_set(),
-                punch: e.punch() * self.unit,
+                punch: e.punch * self.unit,
                 p: Vec::new(),
                 q: Vec::new(),
                 zones: Vec::new(),

@@ -364,12 +364,6 @@ impl ExactPath {
         -(self.k.bq * (left - 0.5 * total) + log / std::f64::consts::PI)
     }
 
-    /// The punch's rigid tangential displacement D (units of pi B P; docs/theory_tangential.md
-    /// (T16)), in the contact's frame.
-    pub(crate) fn punch(&self) -> f64 {
-        self.punch
-    }
-
     /// (p, q) at x given by (1 + x, 1 - x), in the contact's frame.
     pub(crate) fn tractions(&self, opx: f64, omx: f64) -> (f64, f64) {
         let own = |o: f64, m: f64| match &self.branch {

@@ -146,7 +146,7 @@ fn t16_unloading<D: Start + ?Sized>(m: &D, a1: f64, qp: f64) -> f64 {
 /// the quadrature of L[q] is right.
 fn stick_spread(path: &ExactPath, reference: &ExactPath, n: usize) -> f64 {
     let (c1, c2) = path.stick_set();
-    let d = path.punch() - reference.punch();
+    let d = path.punch - reference.punch;
     (1..n)
         .map(|i| {
             let x = c1 + (c2 - c1) * i as f64 / n as f64;
@@ -164,7 +164,7 @@ fn goodman_punch_matches_the_closed_form() {
     let k = goodman();
     let q_star = 0.18;
     let mut path = ExactPath::new(&k, 1e-11, 1e-9).unwrap();
-    assert_eq!(path.punch(), 0.0);
+    assert_eq!(path.punch, 0.0);
     let normal = path.clone();
     let t = std::time::Instant::now();
     path.load(q_star).unwrap();
@@ -174,15 +174,15 @@ fn goodman_punch_matches_the_closed_form() {
     let spread = stick_spread(&path, &normal, 8);
     println!(
         "D(Q*) = {:.12} against (T16) {reference:.12} ({:.1e}); spread {spread:.1e}",
-        path.punch(),
-        path.punch() - reference
+        path.punch,
+        path.punch - reference
     );
-    assert!((path.punch() - reference).abs() < 1e-9 && spread < 1e-9);
+    assert!((path.punch - reference).abs() < 1e-9 && spread < 1e-9);
     let Branch::Loading { m, .. } = &path.branch else {
         panic!("not loading")
     };
     let m = m.clone();
-    let d_star = path.punch();
+    let d_star = path.punch;
     for frac in [-0.6, -0.8] {
         let qp = frac * q_star;
         let before = path.clone();
@@ -194,11 +194,11 @@ fn goodman_punch_matches_the_closed_form() {
         println!(
             "Q/Q* = {frac}: D = {:.12} against (T16) {reference:.12} ({:.1e}); spread {spread:.1e} \
              ({:?})",
-            path.punch(),
-            path.punch() - reference,
+            path.punch,
+            path.punch - reference,
             t.elapsed()
         );
-        assert!((path.punch() - reference).abs() < 1e-9 && spread < 1e-9);
+        assert!((path.punch - reference).abs() < 1e-9 && spread < 1e-9);
     }
 }
 
@@ -217,11 +217,11 @@ fn ply_stick_set_moves_rigidly() {
     let t = std::time::Instant::now();
     let spread = stick_spread(&path, &normal, 10);
     println!("one (T16): {:?}", t.elapsed() / 9);
-    println!("D(Q*) = {:.10}, spread {spread:.1e}", path.punch());
+    println!("D(Q*) = {:.10}, spread {spread:.1e}", path.punch);
     assert!(spread < 1e-7);
     path.load(-0.18).unwrap();
     let spread = stick_spread(&path, &loaded, 10);
-    println!("D(-Q*) = {:.10}, spread {spread:.1e}", path.punch());
+    println!("D(-Q*) = {:.10}, spread {spread:.1e}", path.punch);
     assert!(spread < 1e-7);
 }
 
