@@ -406,12 +406,16 @@ impl First {
 /// tractions agree with the coarser ones, or with the level below where that is nearer,
 /// within `traction_tol`, less what the distance from lc to the root moves them. Each level
 /// also checks the edge: the root its sigma points to, sigma / slope away, must lie within the
-/// bound plus [`SAFETY`] times the difference from the coarser sigma, else None. c keeps its
+/// bound plus [`SAFETY`] times sigma's uncertainty over the slope, else None; that
+/// uncertainty is the larger of sigma's differences from the coarser columns and from the
+/// level below (with the sparser rows above level 1, sigma moved by 1e-11 .. 5e-11 between
+/// half levels at mu~ = 1; taking only the difference nearer in the tractions refused the
+/// known edge there and the ply at mu = 1 climbed from 59 to 87-101 unknowns). c keeps its
 /// bound as its estimate.
 ///
 /// The tractions' move to the root is the smaller of two bounds on it ((S9)): the move per lc
 /// times the bound on lc's distance ([`SAFETY`] times each), and the move per sigma times
-/// the level's |sigma| plus [`SAFETY`] times its difference from the coarser sigma. The slope,
+/// the level's |sigma| plus [`SAFETY`] times its uncertainty. The slope,
 /// the move per lc and the move per sigma are the bounds [`SLOPE_FLOOR`], [`RATE_BOUND`] and
 /// [`SIGMA_RATE_BOUND`] (a smaller slope and larger moves only make the tests stricter) until
 /// the edge test fails with them, or a level's tractions meet the tolerance but not with the
@@ -446,18 +450,20 @@ fn at_fixed_edge(
                 fixed: cur.clone(),
             });
         }
-        let mut prev = coarse;
-        let (mut dp, mut dq) = distance(&cur, &prev, &first.rules);
+        // sigma's uncertainty: the larger of its differences from the coarser columns and
+        // from the level below (both at lc)
+        let mut dsigma = (cur.sigma - coarse.sigma).abs();
+        let (mut dp, mut dq) = distance(&cur, &coarse, &first.rules);
         if let Some(b) = below.take() {
+            dsigma = dsigma.max((cur.sigma - b.sigma).abs());
             let (bp, bq) = distance(&cur, &b, &first.rules);
             if bp + delta * bq < dp + delta * dq {
-                (dp, dq, prev) = (bp, bq, b);
+                (dp, dq) = (bp, bq);
             }
         }
         let off_edge = |s: Option<Sensitivity>| {
             let slope = s.map_or(SLOPE_FLOOR * k.b, |s| s.slope.abs());
-            (cur.sigma / slope).abs()
-                > uncertainty + SAFETY * ((cur.sigma - prev.sigma) / slope).abs()
+            (cur.sigma / slope).abs() > uncertainty + SAFETY * dsigma / slope
         };
         if off_edge(first.measured)
             && (first.measured.is_some() || off_edge(Some(first.measured(k)?)))
@@ -466,8 +472,8 @@ fn at_fixed_edge(
         }
         // lc's distance to the root by sigma, |sigma| / slope, with sigma's uncertainty
         // added (spread) and taken off (least)
-        let spread = cur.sigma.abs() + SAFETY * (cur.sigma - prev.sigma).abs();
-        let least = (cur.sigma.abs() - SAFETY * (cur.sigma - prev.sigma).abs()).max(0.0);
+        let spread = cur.sigma.abs() + SAFETY * dsigma;
+        let least = (cur.sigma.abs() - SAFETY * dsigma).max(0.0);
         let shift = |s: Option<Sensitivity>, sigma: f64| {
             let (by_lc, by_sigma) = match s {
                 Some(s) => (s.rate, (s.rate.0 / s.slope.abs(), s.rate.1 / s.slope.abs())),
@@ -650,6 +656,9 @@ fn verdict(f: &Fixed, mu: f64, traction_tol: f64, delta: f64, parts: (f64, f64))
     let Some(noise) = admissible(f, mu) else {
         return Verdict::Inadmissible;
     };
+    if std::env::var("X_NOISE").is_ok() {
+        eprintln!("noise {noise:e} parts {parts:?} n {}", f.unknowns());
+    }
     let parts = (parts.0 + noise, parts.1 + mu * noise);
     if parts.0 + delta * parts.1 <= traction_tol {
         Verdict::Answer(parts)

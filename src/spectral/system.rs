@@ -47,6 +47,9 @@ pub(crate) struct Sizes {
     pub(crate) poles: [usize; 2],
     /// Columns X x^(2k) and i X x^(2k+1), k < bonded, on the stick zone ((X1)).
     pub(crate) bonded: usize,
+    /// Factor on the collocation points per unknown ([`STICK_POINTS`], [`SLIP_POINTS`]):
+    /// 1 at level 1 and below, [`SPARSE_POINTS`] above.
+    pub(crate) points: f64,
 }
 
 impl Sizes {
@@ -85,6 +88,7 @@ impl Sizes {
                 (slip_decades * per_decade).ceil() as usize,
             ],
             bonded: if bonded { BONDED } else { 0 },
+            points: if l <= 1.0 { 1.0 } else { SPARSE_POINTS },
         }
     }
 }
@@ -453,6 +457,29 @@ impl Basis {
 const STICK_POINTS: f64 = 0.6;
 const SLIP_POINTS: f64 = 1.0;
 
+/// Factor on [`STICK_POINTS`] and [`SLIP_POINTS`] above level 1 where g >= [`DENSE_BELOW_G`]
+/// (about 1.5 rows per unknown there; docs/theory_spectral.md (C1)). Level 1 keeps the full
+/// points: it answers alone at loose tolerances, where with halved points its traction
+/// estimate missed once (tests/auto.rs, ply at mu = 0.1 and 1e-4: error 7.2e-8 against an
+/// estimate of 6.6e-8). Measured on the 10 spectral scenes of the 12 speed scenes (thread CPU
+/// time, median over the scenes, the two alternated twice in one run):
+///
+/// | points above level 1 | (1e-10, 1e-8) | (1e-10, 1e-10) |
+/// |---|---|---|
+/// | 1 (0.6, 1.0 per unknown) | 0.841, 0.836 ms | 1.476, 1.457 ms |
+/// | 0.5 (0.3, 0.5 per unknown) | 0.588, 0.594 ms | 1.159, 1.182 ms |
+///
+/// and, with halved points at every level, on 120 mid-range points and the 53 x 53 grid of
+/// (C1): every answer at (1e-10, 1e-8) agreeing with the panels, 23 of 765 lost at
+/// (1e-10, 1e-10), 20 of them at g < 0.015 ([`DENSE_BELOW_G`]).
+const SPARSE_POINTS: f64 = 0.5;
+
+/// Below this edge exponent every level keeps the full points: there the slip columns'
+/// rounding (q = mu~ p) sets the traction floor near 1e-10 (docs/theory_spectral.md
+/// section 5), and halved points lost 20 answers of the 53 x 53 grid at (1e-10, 1e-10)
+/// below g = 0.015; with the full points below 0.02, 762 of 765 answered.
+const DENSE_BELOW_G: f64 = 0.02;
+
 /// The solution of the fixed-c system.
 #[derive(Clone, Debug)]
 pub(crate) struct Fixed {
@@ -504,11 +531,16 @@ impl Assembled {
         let basis = Basis::new(k, c, w, sizes);
         let n = basis.len();
         let cols = n + 1;
+        let points = if k.g < DENSE_BELOW_G {
+            1.0
+        } else {
+            sizes.points
+        };
         let (stick, slip) = collocation(
             c,
             w,
-            (STICK_POINTS * cols as f64).ceil() as usize,
-            (SLIP_POINTS * cols as f64).ceil() as usize,
+            (points * STICK_POINTS * cols as f64).ceil() as usize,
+            (points * SLIP_POINTS * cols as f64).ceil() as usize,
         );
         let rows = 2 * stick.len() + slip.len();
         let mut a = vec![0.0; rows * cols];
