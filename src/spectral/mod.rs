@@ -200,10 +200,11 @@ fn serves(k: Constants, lc: f64) -> bool {
 /// and the tractions within `traction_tol` (dq~ weighed by `delta`), or None where no level
 /// up to [`MAX_LEVEL`] gets there or the answer is not admissible (the panels answer then).
 ///
-/// Level 1 is solved at lc. Where `bound` <= `tol`, [`at_fixed_edge`] keeps lc, with sigma's
-/// slope and the tractions' move per unit of lc bounded ([`SLOPE_FLOOR`], [`RATE_BOUND`]) or,
-/// where the bounds do not decide, measured ([`First::measured`]); else, or where the table's c
-/// does not serve, [`newton_ladder`] moves lc with the measured slope.
+/// Where `bound` <= `tol`, [`at_fixed_edge`] keeps lc, with sigma's slope and the tractions'
+/// move per unit of lc bounded ([`SLOPE_FLOOR`], [`RATE_BOUND`]) or, where the bounds do not
+/// decide, measured at the level that needs them ([`First::measured_at`]); else, or where
+/// the table's c does not serve, [`newton_ladder`] moves lc from level 1 at lc with the
+/// measured slope.
 pub(crate) fn from_edge(
     k: Constants,
     lc: f64,
@@ -228,6 +229,7 @@ pub(crate) fn from_edge(
     };
     fixed.or_else(|| {
         first.measured(k)?;
+        first.base(k)?;
         newton_ladder(k, &first, tol, traction_tol, delta)
     })
 }
@@ -400,6 +402,28 @@ impl First {
     }
 }
 
+impl First {
+    /// The slope and the rate measured at a level's own sizes: `cur`, solved at the starting
+    /// lc with `sizes`, against the same sizes at lc + [`SLOPE_STEP`] (one solve, in place of
+    /// level 1 twice, [`First::measured`]).
+    fn measured_at(&mut self, k: Constants, cur: &Fixed, sizes: Sizes) -> Option<Sensitivity> {
+        if self.measured.is_none() {
+            let e = StickEdge::from_logit(self.lc + SLOPE_STEP);
+            let shifted = solve_fixed(k, e.c, e.one_minus_c, sizes).ok()?;
+            let slope = (shifted.sigma - cur.sigma) / SLOPE_STEP;
+            if slope == 0.0 || !slope.is_finite() {
+                return None;
+            }
+            let (mp, mq) = distance(&shifted, cur, &self.rules);
+            self.measured = Some(Sensitivity {
+                slope,
+                rate: (mp / SLOPE_STEP, mq / SLOPE_STEP),
+            });
+        }
+        self.measured
+    }
+}
+
 /// The tractions at the starting lc, whose c is within `bound` of the exact one: half levels
 /// from [`first_half_level`] on, each one assembly and one factorisation at lc that solve both
 /// the level and its coarser columns ([`system::solve_fixed_pair`]), until the level's
@@ -420,7 +444,8 @@ impl First {
 /// [`SIGMA_RATE_BOUND`] (a smaller slope and larger moves only make the tests stricter) until
 /// the edge test fails with them, or a level's tractions meet the tolerance but not with the
 /// move added while the bound by lc's distance alone exceeds it; then the slope and the move
-/// per lc are measured ([`First::measured`]) and the test is repeated. None where, measured,
+/// per lc are measured at the level's sizes ([`First::measured_at`]) and the test is
+/// repeated. None where, measured,
 /// the move with sigma's uncertainty taken off |sigma| (which the levels above do not lower)
 /// exceeds `traction_tol`.
 fn at_fixed_edge(
@@ -466,7 +491,7 @@ fn at_fixed_edge(
             (cur.sigma / slope).abs() > uncertainty + SAFETY * dsigma / slope
         };
         if off_edge(first.measured)
-            && (first.measured.is_some() || off_edge(Some(first.measured(k)?)))
+            && (first.measured.is_some() || off_edge(Some(first.measured_at(k, &cur, sizes)?)))
         {
             return None;
         }
@@ -493,7 +518,7 @@ fn at_fixed_edge(
         {
             // the move alone fails the level, and the bound on lc's distance would fail
             // every level
-            moved = shift(Some(first.measured(k)?), spread);
+            moved = shift(Some(first.measured_at(k, &cur, sizes)?), spread);
         }
         if let Some(s) = first.measured
             && exceeds(shift(Some(s), least))
