@@ -381,6 +381,12 @@ fn dot(a: &[f64], b: &[f64]) -> f64 {
     (acc[0] + acc[4]) + (acc[1] + acc[5]) + ((acc[2] + acc[6]) + (acc[3] + acc[7])) + tail
 }
 
+/// The examples' thread CPU clock, for the measurement below (one home for it).
+#[cfg(all(test, feature = "measure"))]
+#[allow(dead_code)]
+#[path = "../../examples/support/clock.rs"]
+mod clock;
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -448,23 +454,8 @@ mod tests {
         );
     }
 
-    /// Thread CPU time in seconds (CLOCK_THREAD_CPUTIME_ID = 3 on Linux).
     #[cfg(feature = "measure")]
-    fn cpu_seconds() -> f64 {
-        #[repr(C)]
-        struct Timespec {
-            sec: i64,
-            nsec: i64,
-        }
-        unsafe extern "C" {
-            fn clock_gettime(clock: i32, out: *mut Timespec) -> i32;
-        }
-        let mut t = Timespec { sec: 0, nsec: 0 };
-        // SAFETY: clock_gettime writes one timespec to a valid pointer.
-        let rc = unsafe { clock_gettime(3, &mut t) };
-        assert_eq!(rc, 0, "clock_gettime");
-        t.sec as f64 + 1e-9 * t.nsec as f64
-    }
+    use super::clock::cpu_seconds;
 
     /// [`OWN_QR_COLUMNS`]' table: [`constrained`] (faer's pivoted QR) against
     /// [`constrained_by`] with our QR, thread CPU time, alternated, minima.
