@@ -384,8 +384,8 @@ impl Frame {
 }
 
 /// Chebyshev points per column of a zone: with two rows per stick point and one per slip
-/// point, 2 .. 2.6 rows per unknown, the normal-load solver's 2.6 (docs/theory_spectral.md
-/// (C1)). At the ply (Q/P = 0.18, fixed geometry) 2.0 instead of 1.3 changed the distance
+/// point, 2 .. 2.6 rows per unknown (the normal-load solver's: 2.6 at its level 1, 1.5
+/// above, docs/theory_spectral.md (C1)). At the ply (Q/P = 0.18, fixed geometry) 2.0 instead of 1.3 changed the distance
 /// to level 10 by less than its scatter between levels (1e-7, the frame's noise floor there).
 const POINTS_PER_COLUMN: f64 = 1.3;
 
