@@ -48,7 +48,7 @@ pub(crate) struct Sizes {
     /// Columns X x^(2k) and i X x^(2k+1), k < bonded, on the stick zone ((X1)).
     pub(crate) bonded: usize,
     /// Factor on the collocation points per unknown ([`STICK_POINTS`], [`SLIP_POINTS`]):
-    /// 1 at level 1 and below, [`SPARSE_POINTS`] above.
+    /// 1 at level 1 and below and where c < [`DENSE_BELOW_C`], [`SPARSE_POINTS`] above.
     pub(crate) points: f64,
 }
 
@@ -88,7 +88,11 @@ impl Sizes {
                 (slip_decades * per_decade).ceil() as usize,
             ],
             bonded: if bonded { BONDED } else { 0 },
-            points: if l <= 1.0 { 1.0 } else { SPARSE_POINTS },
+            points: if l <= 1.0 || c < DENSE_BELOW_C {
+                1.0
+            } else {
+                SPARSE_POINTS
+            },
         }
     }
 }
@@ -473,6 +477,27 @@ const SLIP_POINTS: f64 = 1.0;
 /// (C1): every answer at (1e-10, 1e-8) agreeing with the panels, 23 of 765 lost at
 /// (1e-10, 1e-10), 20 of them at g < 0.015 ([`DENSE_BELOW_G`]).
 const SPARSE_POINTS: f64 = 0.5;
+
+/// Below this stick edge every level keeps the full points: next to a small stick zone the
+/// slip zone's tractions vary on the scale c, and with the sparser points the answers, whose
+/// traction distance (the L1 norm of the estimates) still held, moved pointwise by far more
+/// than with the full points between the collocation points a few c beyond x = c. The
+/// largest pointwise distance to the panels at (1e-13, 1e-12) on |x| <= 0.99 (and on a fine
+/// grid of (0, 50 c)) of the answers at (1e-10, 1e-10), at b* = 0.3, 0.6, 0.9:
+///
+/// | c | sparser points | full points |
+/// |---|---|---|
+/// | 1.7e-4 .. 2.7e-4 | 1.1e-10 .. 7.8e-9 | 2.6e-12 .. 1.2e-11 |
+/// | 4.8e-4 .. 7.8e-4 | 9.9e-12 .. 1.8e-9 | 1.1e-12 .. 2.8e-11 |
+/// | 1.2e-3 .. 1.4e-3 | 1.3e-11 .. 3.4e-11 | 4.3e-12 .. 1.4e-11 |
+/// | 2.0e-3 .. 4.6e-3 | 1.6e-12 .. 1.2e-11 | 7.9e-13 .. 2.5e-12 |
+/// | 5.3e-3 .. 4.4e-2 | 2.3e-12 .. 1.7e-11 | 7.4e-13 .. 8.0e-12 |
+///
+/// (the carbon ply at mu = 0.1, c = 4.8e-5: 6.4e-9 against 3.0e-10 at (1e-10, 1e-10), and
+/// 1.2e-9 against 1.4e-11 at (1e-12, 1e-12)). Next to thin slip zones (1 - c = 4e-6 .. 5e-2,
+/// the same b*) neither kind of points was the better one pointwise (both 4e-13 .. 5e-9),
+/// and the sparser ones answered more of them.
+const DENSE_BELOW_C: f64 = 2e-3;
 
 /// Below this edge exponent every level keeps the full points: there the slip columns'
 /// rounding (q = mu~ p) sets the traction floor near 1e-10 (docs/theory_spectral.md
