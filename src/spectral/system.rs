@@ -465,8 +465,9 @@ const SLIP_POINTS: f64 = 1.0;
 /// (about 1.5 rows per unknown there; docs/theory_spectral.md (C1)). Level 1 keeps the full
 /// points: it answers alone at loose tolerances, where with halved points its traction
 /// estimate missed once (tests/auto.rs, ply at mu = 0.1 and 1e-4: error 7.2e-8 against an
-/// estimate of 6.6e-8). Measured on the 10 spectral scenes of the 12 speed scenes (thread CPU
-/// time, median over the scenes, the two alternated twice in one run):
+/// estimate of 6.6e-8). Measured, with the sparser points at every c (before
+/// [`DENSE_BELOW_C`]), on the 10 spectral scenes of the 12 speed scenes (thread CPU time,
+/// median over the scenes, the two alternated twice in one run):
 ///
 /// | points above level 1 | (1e-10, 1e-8) | (1e-10, 1e-10) |
 /// |---|---|---|
