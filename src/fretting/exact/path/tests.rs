@@ -9,7 +9,7 @@ use super::super::unload::tests::t13;
 use super::*;
 use crate::Material;
 use crate::numerics::roots::secant;
-use std::f64::consts::PI;
+use std::f64::consts::{LN_2, PI};
 
 fn goodman() -> Coupling {
     let k = Material::plane_stress(181e9, 10.3e9, 7.17e9, 0.28)
@@ -30,10 +30,11 @@ fn snapshot(p: &ExactPath) -> Vec<u64> {
     v.into_iter().map(f64::to_bits).collect()
 }
 
-/// bp = 0 along 0 -> Q* -> -0.6 Q* -> -0.8 Q* -> -Q* -> Q_r (past the reloading's first slip): the stick set's
-/// moving end is the root of (T11), (T13) and (T15) in turn; a load the exact solvers do not
-/// answer (the unloading's full-stick range above its first slip, (T13a)) is refused with
-/// InvalidArgument and leaves the path as it was.
+/// bp = 0 along 0 -> Q* -> 0 -> -0.6 Q* -> -0.8 Q* -> -Q* -> 0.5 Q* -> Q_r (past the
+/// reloading's first slip): in the full-stick ranges ((T13a) at 0, (T15a) at 0.5 Q*) the
+/// state is the closed form q = q_d + ((Q - Q_d)/P) p0 with p unchanged, the stick set the
+/// whole contact, D by (T16) ([`stuck_against_closed_form`]); the stick set's moving end is
+/// the root of (T11), (T13) and (T15) in turn.
 #[test]
 fn goodman_path_matches_the_closed_forms() {
     let k = goodman();
@@ -49,18 +50,10 @@ fn goodman_path_matches_the_closed_forms() {
         panic!("not loading")
     };
     let m = m.clone();
-    // above the first slip the unloading sticks fully, which the exact path does not carry
-    let before = snapshot(&path);
-    match path.load(0.0) {
-        Err(Error::InvalidArgument(msg)) => {
-            assert!(
-                msg.contains("CycleMethod::Exact") && msg.contains("LcpHistory"),
-                "{msg}"
-            )
-        }
-        other => panic!("unloading to 0 at bp = 0: {:?}", other.map(|_| ())),
-    }
-    assert_eq!(snapshot(&path), before, "a refused load changed the path");
+    // above the first slip the unloading sticks fully: (T13a)
+    let loaded = path.clone();
+    path.load(0.0).unwrap();
+    stuck_against_closed_form(&path, &loaded);
     // the unloading, in steps that continue the branch ((T13)'s quadrature needs the loaded
     // state's kink c2* outside (-1, a1): at -0.6 Q* and -0.8 Q*, not at -Q*)
     for frac in [-0.6, -0.8] {
@@ -84,6 +77,14 @@ fn goodman_path_matches_the_closed_forms() {
     let p0 = 1.0 / (std::f64::consts::PI * (1e-12f64 * (2.0 - 1e-12)).sqrt());
     let q_s = u.qp + (k.mu - q / p0);
     let q_r = q_s + 0.3 * (k.mu - q_s);
+    // below Q_s the reloading sticks fully: (T15a)
+    let unloaded = path.clone();
+    path.load(0.5 * q_star).unwrap();
+    stuck_against_closed_form(&path, &unloaded);
+    let Branch::Stuck { slip_at, .. } = path.branch else {
+        panic!("not stuck")
+    };
+    assert!((slip_at - q_s).abs() < 1e-15, "{slip_at} against {q_s}");
     path.load(q_r).unwrap();
     let (b1, b2) = path.stick_set();
     let root = t15_root(&*u, q_r, b2);
@@ -95,6 +96,95 @@ fn goodman_path_matches_the_closed_forms() {
     assert!((path.q_over_p() - q_r).abs() == 0.0);
     let (ce, te) = path.estimates();
     assert!(ce < 1e-9 && te < 1e-8, "estimates {ce:e}, {te:e}");
+}
+
+/// A full-stick state `path` reached from the state `data` where the load reversed:
+/// q = q_d + ((Q - Q_d)/P) p0 and p = p_d at points across the contact, with p0 the flat
+/// punch's 1/(pi sqrt(1 - x^2)) ((T13a), (T15a)); the stick set [-1, 1]; no dissipation
+/// since `data`; D by (T16) as the quadrature of the change of e at 9 points of the contact
+/// (`surface_change`: e - e_d = -L[q - q_d], a different evaluation from the path's closed
+/// form (Q - Q_d)/P ln 2 / pi); the moment unchanged.
+fn stuck_against_closed_form(path: &ExactPath, data: &ExactPath) {
+    let dq = path.q_over_p() - data.q_over_p();
+    assert_eq!(path.stick_set(), (-1.0, 1.0));
+    assert_eq!(path.dissipated, data.dissipated);
+    assert_eq!(path.moment(), data.moment());
+    for x in [-0.999999, -0.9, -0.5, -0.2, 0.0, 0.3, 0.7, 0.99, 0.9999999] {
+        let (p, q) = path.tractions(1.0 + x, 1.0 - x);
+        let (pd, qd) = data.tractions(1.0 + x, 1.0 - x);
+        let p0 = 1.0 / (PI * ((1.0 + x) * (1.0 - x)).sqrt());
+        assert_eq!(p, pd);
+        assert!(
+            (q - (qd + dq * p0)).abs() <= 1e-14 * p0,
+            "x = {x}: q = {q} against {}",
+            qd + dq * p0
+        );
+        assert!(q.abs() <= k_mu(path) * p, "x = {x}: |q| > mu p");
+    }
+    let spread = stick_spread(path, data, 10);
+    println!(
+        "stuck at Q/P = {}: D = {:.12}, (T16) by quadrature within {spread:.1e}",
+        path.q_over_p(),
+        path.punch
+    );
+    assert!(spread < 1e-9, "D against (T16): {spread:e}");
+}
+
+fn k_mu(path: &ExactPath) -> f64 {
+    path.k.mu
+}
+
+/// bp = 0, a cycle on the path through the full-stick ranges: 0 -> Q* -> 0 (stuck,
+/// (T13a)) -> -Q* (the slipping part, from the loaded state) -> Q* (stuck, (T15a)) -> -Q*:
+/// the unloading's dissipation is section 15's W1 = 2.882525151e-3 pi B P^2 (mu int p0 s of
+/// the unloading solver's slip, another evaluation than (T17)'s), the full-stick steps
+/// dissipate nothing, and the second unloading returns to the unloaded state bit for bit
+/// (shakedown). A load just past the reloading's first slip Q_s, where the zone at +1 is
+/// far thinner than the bases resolve, is refused and leaves the path as it was.
+#[test]
+fn goodman_cycle_through_full_stick() {
+    let k = goodman();
+    let q_star = 0.18;
+    let mut path = ExactPath::new(&k, 1e-11, 1e-9).unwrap();
+    path.load(q_star).unwrap();
+    let w0 = path.dissipated;
+    path.load(0.0).unwrap();
+    assert_eq!(path.dissipated, w0);
+    let t = std::time::Instant::now();
+    path.load(-q_star).unwrap();
+    let w1 = path.dissipated - w0;
+    println!("W1 through Q = 0: {w1:.12e} ({:?})", t.elapsed());
+    assert!((w1 - 2.882525151e-3).abs() < 1e-11, "W1 = {w1:e}");
+    let unloaded = snapshot(&path);
+    let d_unloaded = path.punch;
+    path.load(q_star).unwrap();
+    assert!(matches!(path.branch, Branch::Stuck { .. }));
+    assert_eq!(path.dissipated, w0 + w1);
+    // D moves by (2 Q*/P) ln 2 / pi, the full-stick compliance of (T10)
+    assert!((path.punch - d_unloaded - 2.0 * q_star * LN_2 / PI).abs() < 1e-15);
+    path.load(-q_star).unwrap();
+    assert_eq!(
+        snapshot(&path),
+        unloaded,
+        "the second unloading is not the first's state"
+    );
+    assert_eq!(path.punch, d_unloaded);
+    assert_eq!(path.dissipated, w0 + w1);
+    // just past the reloading's first slip
+    path.load(q_star).unwrap();
+    let Branch::Stuck { slip_at, .. } = path.branch else {
+        panic!("not stuck")
+    };
+    let before = snapshot(&path);
+    let t = std::time::Instant::now();
+    let r = path.load(slip_at + 1e-12);
+    println!(
+        "past Q_s by 1e-12: {:?} ({:?})",
+        r.as_ref().err(),
+        t.elapsed()
+    );
+    assert!(r.is_err());
+    assert_eq!(snapshot(&path), before, "a refused load changed the path");
 }
 
 /// Q < 0 from the normal load is the mirror of Q > 0 (docs/theory_tangential.md section 5):
