@@ -328,7 +328,7 @@ impl ExactPath {
 
     /// (p, H[q]) at x given by (1 + x, 1 - x), in the contact's frame (mirrored:
     /// p~(x) = p(-x) and H[q~](x) = H[q](-x), section 15).
-    fn pressure_and_hq(&self, opx: f64, omx: f64) -> (f64, f64) {
+    pub(crate) fn pressure_and_hq(&self, opx: f64, omx: f64) -> (f64, f64) {
         if let Branch::Stuck { data, .. } = &self.branch {
             // p = p_d, and H[q] = H[q_d] since H[p0] = 0 on (-1, 1)
             return data.pressure_and_hq(opx, omx);
@@ -407,6 +407,87 @@ impl ExactPath {
             err += 2.0 * k.mu * edge.abs() * te;
         }
         (w, err)
+    }
+
+    /// The slip of the solid relative to the punch over the load step from `prev` to this
+    /// state (units of pi B P; (T3): ds = de - dD), at points given as (1 + x, 1 - x), in the
+    /// contact's frame: zero on this state's stick set (stuck since `prev`), and in each slip
+    /// zone the integral of the step's slip slope -(bq dp + dH[q]) from the zone's stick end,
+    /// as [`Self::step_dissipation`] reads it. The points of a zone are integrated in one
+    /// running sum from the stick end towards the contact's end, with 16-point Gauss-Legendre
+    /// between neighbours and the graded rule on pieces that end at a zone end or kink of
+    /// either state (where the slope is singular).
+    pub(crate) fn step_slip(&self, prev: &ExactPath, points: &[(f64, f64)]) -> Vec<f64> {
+        use crate::numerics::quadrature::{gauss_legendre, graded_rule};
+        let mut out = vec![0.0; points.len()];
+        if matches!(self.branch, Branch::Normal | Branch::Stuck { .. }) {
+            return out;
+        }
+        let k = self.k;
+        let (c1, c2) = self.stick_set();
+        let mut bps = self.breakpoints();
+        bps.extend(prev.breakpoints());
+        let (gx, gw) = gauss_legendre(16);
+        for (left, width) in [(true, 1.0 + c1), (false, 1.0 - c2)] {
+            if width <= 0.0 {
+                continue;
+            }
+            let at = |o: f64| if left { (o, 2.0 - o) } else { (2.0 - o, o) };
+            let f = |o: f64| {
+                let (opx, omx) = at(o);
+                let (pa, ha) = prev.pressure_and_hq(opx, omx);
+                let (pb, hb) = self.pressure_and_hq(opx, omx);
+                let dslope = -(k.bq * (pb - pa) + hb - ha);
+                if left { dslope } else { -dslope }
+            };
+            // the zone's points by offset from the contact's end, from the stick end out
+            let mut mine: Vec<(f64, usize)> = points
+                .iter()
+                .enumerate()
+                .map(|(i, &(o, m))| (if left { o } else { m }, i))
+                .filter(|&(o, _)| o < width)
+                .collect();
+            if mine.is_empty() {
+                continue;
+            }
+            mine.sort_by(|a, b| b.0.total_cmp(&a.0));
+            let mut cuts: Vec<f64> = bps
+                .iter()
+                .map(|&(o, m)| if left { o } else { m })
+                .filter(|&o| o > 0.0 && o < width)
+                .collect();
+            cuts.push(width);
+            // every stop from the stick end down: (offset, point index or None for a cut)
+            let mut stops: Vec<(f64, Option<usize>)> = cuts.iter().map(|&c| (c, None)).collect();
+            stops.extend(mine.iter().map(|&(o, i)| (o, Some(i))));
+            stops.sort_by(|a, b| b.0.total_cmp(&a.0));
+            let (mut running, mut hi, mut hi_cut) = (0.0, width, true);
+            for (o, idx) in stops {
+                let is_cut = idx.is_none();
+                if o < hi {
+                    let piece: f64 = if hi_cut || is_cut {
+                        graded_rule(o, hi, 0.1, 1e-15, 16)
+                            .into_iter()
+                            .map(|(t, w)| w * f(t))
+                            .sum()
+                    } else {
+                        let h = 0.5 * (hi - o);
+                        gx.iter()
+                            .zip(&gw)
+                            .map(|(t, w)| h * w * f(o + h * (1.0 + t)))
+                            .sum()
+                    };
+                    // ds(o) = ds(hi) - int_o^hi f
+                    running -= piece;
+                }
+                hi = o;
+                hi_cut = is_cut;
+                if let Some(i) = idx {
+                    out[i] = running;
+                }
+            }
+        }
+        out
     }
 
     /// The normal-load state of this path.
