@@ -466,8 +466,11 @@ impl ExactPath {
                 let is_cut = idx.is_none();
                 if o < hi {
                     let piece: f64 = if hi_cut || is_cut {
+                        // nodes rounded onto a zone end (where H[q] is NaN) left out, as in
+                        // `unload::graded` (docs/theory_tangential.md section 18)
                         graded_rule(o, hi, 0.1, 1e-15, 16)
                             .into_iter()
+                            .filter(|&(t, _)| t > o && t < hi)
                             .map(|(t, w)| w * f(t))
                             .sum()
                     } else {

@@ -516,3 +516,77 @@ fn measure_ply_unloading_dissipation() {
         );
     }
 }
+
+/// The NaN slip of docs/theory_tangential.md section 15 (section 18 has its sources): points
+/// near the unloading trailing zone's stick end a2, on the ply unloaded to -Q* (tolerances
+/// 1e-8, 1e-5). Points within a few ulps of a2 on either side are located by their own
+/// offset 1 - x (the rounded left offset 2 - (1 - x) misplaces some of them, the first
+/// source, fixed in `Frame::locate`), their tractions are finite, their slip is 0 on the
+/// stick side; the slip at 1 - x = w2 (1 - f) for f from 4 eps to 1e-2, where the graded
+/// rule's nodes rounded onto a2 (the second source: H[q] is NaN at a zone end), and at
+/// every check fraction of the zone down to 1 - x = 1.4e-14, is a negative number.
+#[test]
+fn ply_slip_near_the_trailing_zone_end_is_a_number() {
+    let k = Material::plane_stress(181e9, 10.3e9, 7.17e9, 0.28)
+        .unwrap()
+        .coupling(0.3);
+    let mut path = ExactPath::new(&k, 1e-8, 1e-5).unwrap();
+    path.load(0.18).unwrap();
+    path.load(-0.18).unwrap();
+    let Branch::Unloading { u, .. } = &path.branch else {
+        panic!("not unloading")
+    };
+    let w2 = u.level.w2.expect("a trailing zone");
+    let frame = &u.level.state.frame;
+    let last = frame.zone_count() - 1;
+    let mut misplaced = 0;
+    for j in 1..=4 {
+        for side in [1.0, -1.0] {
+            let omx = w2 * (1.0 + side * j as f64 * f64::EPSILON);
+            let opx = 2.0 - omx;
+            let l = frame.locate(opx, omx);
+            // the stick side (1 - x > w2) must be in the stick zone before the trailing one
+            let want = if omx > w2 { last - 1 } else { last };
+            assert_eq!(l.zone, want, "1 - x = w2 (1 {side:+} {j} eps)");
+            // what the left offset alone says: 1 + x against the trailing zone's start
+            if (opx < 2.0 - w2) != (omx > w2) {
+                misplaced += 1;
+            }
+            let (p, q) = u.tractions(opx, omx);
+            assert!(p.is_finite() && q.is_finite(), "{p} {q}");
+            if omx > w2 {
+                assert_eq!(u.slip(opx, omx), 0.0);
+            }
+        }
+    }
+    println!("the left offset misplaces {misplaced} of 8 points within 4 ulps of a2");
+    assert!(misplaced > 0);
+    let mut slips = Vec::new();
+    for f in [
+        4.0 * f64::EPSILON,
+        1e-14,
+        1e-12,
+        1e-10,
+        1e-8,
+        1e-6,
+        1e-4,
+        1e-2,
+    ] {
+        let omx = w2 * (1.0 - f);
+        slips.push((f, u.slip(2.0 - omx, omx)));
+    }
+    println!("slip at 1 - x = w2 (1 - f): {slips:?}");
+    assert!(slips.iter().all(|(_, s)| s.is_finite() && *s <= 0.0));
+    // and the right number: bounded tractions with the stick end's exponent g make the slip
+    // grow like (a2 - x)^(1 + g) there (section 13's local exponents); from f = 1e-8 to 1e-4
+    let order = (slips[6].1 / slips[4].1).ln() / 1e4f64.ln();
+    let g = edge_exponent(&k);
+    println!(
+        "slip's exponent at a2: {order:.4} against 1 + g = {:.4}",
+        1.0 + g
+    );
+    assert!((order - 1.0 - g).abs() < 1e-2);
+    let (_, trailing) = u.zone_slips();
+    println!("trailing zone's slips: {trailing:?}");
+    assert!(trailing.iter().all(|(_, s)| s.is_finite() && *s < 0.0));
+}
