@@ -807,7 +807,10 @@ fn graded(a: f64, b: f64, f: &dyn Fn(f64) -> f64) -> f64 {
         pieces.push(0.5 * len * 0.1f64.powi(j));
     }
     pieces.push(0.5 * len);
-    for j in (1..12).rev() {
+    // towards b: offsets len - 0.05 len, ..., len - 5e-12 len, increasing (the loop ran
+    // the other way, which left pieces of negative length and one 16-point piece over
+    // (0.5 len, len) at b's singularity: slips 1e-5 off, docs/theory_tangential.md section 18)
+    for j in 1..12 {
         pieces.push(len - 0.5 * len * 0.1f64.powi(j));
     }
     pieces.push(len);

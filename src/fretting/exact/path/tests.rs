@@ -590,3 +590,32 @@ fn ply_slip_near_the_trailing_zone_end_is_a_number() {
     println!("trailing zone's slips: {trailing:?}");
     assert!(trailing.iter().all(|(_, s)| s.is_finite() && *s < 0.0));
 }
+
+/// bp = 0: the unloading solver's slip since Q* (`Unloading::slip`, a graded integral of the
+/// slope H[q] + bq p - r* from a1) equals (T16)'s e(x) - e*(x) - (D - D*) (`surface_change`,
+/// a quadrature of L[q] and S[p]) in the leading zone, near a1 and at the corner, at -0.6 Q*,
+/// -0.8 Q* and -Q* (docs/theory_tangential.md section 18: with the graded rule's right-end
+/// grading reversed they were 1e-5 apart).
+#[test]
+fn goodman_slip_matches_t16() {
+    let k = goodman();
+    let q_star = 0.18;
+    let mut loaded = ExactPath::new(&k, 1e-11, 1e-9).unwrap();
+    loaded.load(q_star).unwrap();
+    for frac in [-0.6, -0.8, -1.0] {
+        let mut path = loaded.clone();
+        path.load(frac * q_star).unwrap();
+        let Branch::Unloading { u, .. } = &path.branch else {
+            panic!("not unloading")
+        };
+        let (a1, _) = path.stick_set();
+        for x in [-0.9975, a1 - 0.01, a1 - 1e-4] {
+            let t16 = path.surface_change(&loaded, x) - (path.punch - loaded.punch);
+            let s = u.slip(1.0 + x, 1.0 - x);
+            println!("Q/Q* = {frac}, x = {x:.6}: slip {s:.12e}, (T16) {t16:.12e}");
+            // (T16) differences e - e* of size 1e-2: its rounding is 1e-17 .. 1e-15 absolute
+            // (measured 3e-17 .. 2e-14); the reversed grading was 3.5e-10 off at a1 - 0.01
+            assert!(s > 0.0 && (s - t16).abs() < 1e-13, "{s:e} {t16:e}");
+        }
+    }
+}
