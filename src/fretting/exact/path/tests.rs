@@ -594,14 +594,27 @@ fn ply_slip_near_the_trailing_zone_end_is_a_number() {
 /// bp = 0: the unloading solver's slip since Q* (`Unloading::slip`, a graded integral of the
 /// slope H[q] + bq p - r* from a1) equals (T16)'s e(x) - e*(x) - (D - D*) (`surface_change`,
 /// a quadrature of L[q] and S[p]) in the leading zone, near a1 and at the corner, at -0.6 Q*,
-/// -0.8 Q* and -Q* (docs/theory_tangential.md section 18: with the graded rule's right-end
-/// grading reversed they were 1e-5 apart).
+/// -0.8 Q* and -Q*, and the loading's slip since the normal load (`Monotonic::slip`) at Q*
+/// (docs/theory_tangential.md section 18: with the graded rules' right-end grading reversed
+/// they were 1e-5 apart).
 #[test]
 fn goodman_slip_matches_t16() {
     let k = goodman();
     let q_star = 0.18;
     let mut loaded = ExactPath::new(&k, 1e-11, 1e-9).unwrap();
+    let normal = loaded.clone();
     loaded.load(q_star).unwrap();
+    // the loading's slip since the normal load (`Monotonic::slip`, graded from c2) likewise
+    let Branch::Loading { m, .. } = &loaded.branch else {
+        panic!("not loading")
+    };
+    let (_, c2) = loaded.stick_set();
+    for x in [c2 + 1e-4, c2 + 0.01, 0.5, 0.9975] {
+        let t16 = loaded.surface_change(&normal, x) - loaded.punch;
+        let s = m.slip(1.0 + x, 1.0 - x);
+        println!("Q = Q*, x = {x:.6}: slip {s:.12e}, (T16) {t16:.12e}");
+        assert!(s < 0.0 && (s - t16).abs() < 1e-13, "{s:e} {t16:e}");
+    }
     for frac in [-0.6, -0.8, -1.0] {
         let mut path = loaded.clone();
         path.load(frac * q_star).unwrap();
