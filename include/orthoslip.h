@@ -127,8 +127,10 @@ typedef enum {
    * tolerances: for a load path the normal load, monotonic loading and the branches after
    * each reversal where they keep one stick set with a slip zone at each end; other loads
    * are refused with the solver's status and a message (the corner structure of the
-   * ply's unloading above about -0.48 Q* and of its reloading is not built). A fretting
-   * run refuses it (ORTHOSLIP_ERROR_INVALID_ARGUMENT: the exact cycle is not built).
+   * ply's unloading above about -0.48 Q* and of its reloading is not built); at bp = 0
+   * with the branches' full-stick ranges. A fretting run follows the cycle's load steps on
+   * that path where it answers every one of them; otherwise it returns the refusal (the
+   * solver's status and a message naming what is not built), never the grid's answer.
    */
   ORTHOSLIP_CYCLE_METHOD_EXACT = 1,
 } orthoslip_cycle_method;
@@ -840,10 +842,12 @@ orthoslip_status orthoslip_contact_solve_cycles(const orthoslip_contact *k,
                                                 orthoslip_cycles **out);
 
 /**
- * As `orthoslip_contact_solve_cycles`, with options `o`. Options choosing
- * ORTHOSLIP_CYCLE_METHOD_EXACT are refused with ORTHOSLIP_ERROR_INVALID_ARGUMENT and a
- * message: the exact cycle is not built (a load path follows the exact branches where
- * they answer).
+ * As `orthoslip_contact_solve_cycles`, with options `o`. With
+ * ORTHOSLIP_CYCLE_METHOD_EXACT the cycle's load steps are taken on the exact load path
+ * (profiles are its values at the grid's panel midpoints); a load it does not answer (the
+ * corner structure at bp > 0, not built) returns its status (ORTHOSLIP_ERROR_NO_CONVERGENCE,
+ * _NO_ADMISSIBLE_SOLUTION, ...) and a message naming the cycle, the step and what is not
+ * built.
  *
  * # Safety
  * `k` and `o` must be NULL or live handles; `out` NULL or valid for writing one pointer.

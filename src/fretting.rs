@@ -20,8 +20,10 @@
 //!   observed orders being 0.7-1.3).
 //! - [`CycleMethod::Exact`], the exact solvers (`exact`) for a [`LoadPath`] where they
 //!   answer (the normal load, monotonic loading, the branches after a reversal that keep one
-//!   stick set with a slip zone at each end); everything else, [`Fretting::solve`] included,
-//!   is refused with a clear status and message.
+//!   stick set with a slip zone at each end, at bp = 0 with their full-stick ranges), and
+//!   [`Fretting::solve`] on those states (`exact_run`: the cycle's load steps, profiles
+//!   sampled at the grid's midpoints); everything else is refused with a clear status and
+//!   message.
 //!
 //! Units: x per a; p, q, tau and sigma_xx per P/a; displacements and slip amplitudes per P/E;
 //! energies per unit thickness in P^2/E; F1 in P^2/(a E); F2 in P^3/(a^2 E). E is the
@@ -48,6 +50,9 @@ pub use crate::lcp::history::Zone;
 #[cfg_attr(not(test), allow(dead_code))]
 pub(crate) mod exact;
 
+/// [`Fretting::solve`] on the exact load path (docs/theory_tangential.md section 18).
+mod exact_run;
+
 /// How a cycle is solved; the discriminants are the C ABI's `orthoslip_cycle_method` values
 /// (append-only).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -59,8 +64,10 @@ pub enum CycleMethod {
     /// carrying the zones' exponents, c1 and c2 to 1e-10 where they answer), to the
     /// contact's tolerances: for [`LoadPath`] the normal load, monotonic loading and the
     /// branches after each reversal where they keep one stick set with a slip zone at each
-    /// end; other loads are refused with a clear status, not answered by the grid.
-    /// [`Fretting::solve`] refuses it (the exact cycle is not built).
+    /// end (at bp = 0 with their full-stick ranges); other loads are refused with a clear
+    /// status, not answered by the grid. [`Fretting::solve`] takes the cycle's load steps on
+    /// that path where it answers them all (bp = 0; docs/theory_tangential.md section 18),
+    /// and otherwise returns the refusal.
     Exact = 1,
 }
 
@@ -530,7 +537,9 @@ impl Fretting {
     ///
     /// Errors: `InvalidArgument` for options out of range, a contact with mu = 0, an
     /// amplitude that is not finite, <= 0, or >= mu (gross sliding), and for
-    /// [`CycleMethod::Exact`] (not built for cycles: the message says what is missing);
+    /// [`CycleMethod::Exact`] the exact path's status where it refuses a load of the cycle
+    /// (bp > 0: the corner structure, not built; the message names the cycle, the step and
+    /// what is missing);
     /// `NoAdmissibleSolution`
     /// when the pressure turns negative somewhere on the path (strong coupling at large
     /// amplitudes: the punch would lift off, which this model does not describe);
@@ -545,17 +554,7 @@ impl Fretting {
             )));
         }
         if options.method == CycleMethod::Exact {
-            return Err(Error::InvalidArgument(
-                "CycleMethod::Exact (ORTHOSLIP_CYCLE_METHOD_EXACT) does not solve fretting \
-                 cycles: the exact cycle (the \
-                 full-stick branches of the bp = 0 closed forms (T13a), (T15a), the corner \
-                 structure of the unloading and reloading at bp > 0, docs/theory_tangential.md \
-                 sections 13-15, and the cycle's load steps for its dissipation (T17)) is not \
-                 built; CycleMethod::LcpHistory (ORTHOSLIP_CYCLE_METHOD_LCP_HISTORY) \
-                 answers it, and a load path \
-                 (LoadPath) follows the exact branches where they answer"
-                    .into(),
-            ));
+            return exact_run::solve(contact, &k, q_amp_over_p, options);
         }
         let unit = unit(contact);
         let (n, s) = (options.panels, options.steps);

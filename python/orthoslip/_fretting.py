@@ -29,8 +29,11 @@ class CycleMethod(enum.IntEnum):
     EXACT = lib.ORTHOSLIP_CYCLE_METHOD_EXACT
     """The exact solvers, to the contact's ``tol`` and ``traction_tol``: for a :class:`History`
     the normal load, monotonic loading and the branches after each reversal where they keep
-    one stick set with a slip zone at each end (other loads raise, the history unchanged);
-    :func:`solve_cycles` raises :class:`InvalidArgumentError` (the exact cycle is not built).
+    one stick set with a slip zone at each end, at bp = 0 with their full-stick ranges (other
+    loads raise, the history unchanged); :func:`solve_cycles` takes the cycle's load steps on
+    that path and raises the path's error (:class:`NoConvergenceError`,
+    :class:`NoAdmissibleSolutionError`, ...) where it refuses one (bp > 0: the corner
+    structure is not built; a material has bp = 0 only with bq = 0).
     """
 
 

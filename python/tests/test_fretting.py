@@ -16,6 +16,8 @@ from orthoslip import (
     CycleState,
     InvalidArgumentError,
     Material,
+    NoAdmissibleSolutionError,
+    NoConvergenceError,
 )
 
 
@@ -196,7 +198,10 @@ def test_exact_history() -> None:
     mirror.load(-0.3)
     assert w > 0.0 and math.isfinite(werr)
     assert abs(mirror.dissipated_energy[0] - w) <= 1e-10 * w
-    with pytest.raises(InvalidArgumentError, match="LCP_HISTORY"):
+    # a fretting run: refused at its first unloading step (the corner structure, not built)
+    with pytest.raises(
+        (NoAdmissibleSolutionError, NoConvergenceError), match="cycle 0, unloading"
+    ):
         k.solve_cycles(0.3, method=CycleMethod.EXACT)
     s = h.solution()
     assert s.stick_zone == (c1, c2)

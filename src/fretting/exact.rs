@@ -724,23 +724,51 @@ impl Monotonic {
             return 0.0;
         };
         let len = if dir > 0.0 { (1.0 - c2) - omx } else { len };
-        // graded towards both ends of [0, len]
+        // the normal load's kinks +-c (its stick-slip points: H[q0] carries |x -+ c|^g) inside
+        // [0, len] cut it (they were not cuts: the slope's kink at c inside one 16-point
+        // piece put the slip 1.5e-4 off beyond c, docs/theory_tangential.md section 18)
+        let c = self.c;
+        let mut pieces = vec![0.0, len];
+        for kink_opx in [1.0 - c, 1.0 + c] {
+            let sk = dir * (kink_opx - end_opx);
+            if sk > 0.0 && sk < len {
+                pieces.push(sk);
+            }
+        }
+        pieces.sort_by(f64::total_cmp);
         let mut total = 0.0;
-        let mut cuts = vec![0.0];
-        for k in (1..12).rev() {
-            cuts.push(0.5 * len * 0.1f64.powi(k));
-        }
-        cuts.push(0.5 * len);
-        for k in (1..12).rev() {
-            cuts.push(len - 0.5 * len * 0.1f64.powi(k));
-        }
-        cuts.push(len);
-        for seg in cuts.windows(2) {
-            let (a, b) = (seg[0], seg[1]);
-            for (t, w) in xs.iter().zip(&ws) {
-                let s = a + 0.5 * (b - a) * (1.0 + t);
-                let (po, mo) = (end_opx + dir * s, end_omx - dir * s);
-                total += 0.5 * (b - a) * w * self.slip_slope(po, mo);
+        for piece in pieces.windows(2) {
+            let (lo, plen) = (piece[0], piece[1] - piece[0]);
+            // graded towards both ends of the piece
+            let mut cuts = vec![0.0];
+            for k in (1..12).rev() {
+                cuts.push(0.5 * plen * 0.1f64.powi(k));
+            }
+            cuts.push(0.5 * plen);
+            // increasing towards plen (the loop ran the other way: pieces of negative length,
+            // the same fault as `unload::graded`'s, section 18)
+            for k in 1..12 {
+                cuts.push(plen - 0.5 * plen * 0.1f64.powi(k));
+            }
+            cuts.push(plen);
+            for seg in cuts.windows(2) {
+                let (a, b) = (seg[0], seg[1]);
+                for (t, w) in xs.iter().zip(&ws) {
+                    let u = a + 0.5 * (b - a) * (1.0 + t);
+                    // from the piece's nearer end, so that offsets keep their digits
+                    let s = if u < 0.5 * plen {
+                        lo + u
+                    } else {
+                        piece[1] - (plen - u)
+                    };
+                    let (po, mo) = (end_opx + dir * s, end_omx - dir * s);
+                    // a node within rounding of a zone end or kink lands on it, where H[q]
+                    // is NaN: left out, as in `unload::graded` (weight below 1.4e-13 plen)
+                    if s <= lo || s >= piece[1] || po == end_opx || mo == end_omx {
+                        continue;
+                    }
+                    total += 0.5 * (b - a) * w * self.slip_slope(po, mo);
+                }
             }
         }
         dir * total

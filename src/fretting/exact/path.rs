@@ -4,15 +4,17 @@
 //! reversed ([`super::unload::unload`]; a branch with Q rising is the unloading of the
 //! mirrored state, docs/theory_tangential.md sections 5 and 15). Continuing in the same
 //! direction re-solves the same branch at the new load (each branch is path-independent
-//! from its data, sections 10 and 13).
+//! from its data, sections 10 and 13). At bp = 0 a branch starts fully stuck ((T13a),
+//! (T15a)): that range is carried in closed form ([`Branch::Stuck`], section 18).
 //!
 //! Every state is held in a frame of its own, the contact's or its mirror (x -> -x,
 //! q -> -q); [`ExactPath`]'s getters read it in the contact's frame.
 
+use std::f64::consts::{LN_2, PI};
 use std::sync::Arc;
 
 use super::frame::Solved;
-use super::unload::{Mirror, Start, Unloading, by_parts, unload, unload_from};
+use super::unload::{Mirror, Start, Unloading, by_parts, first_slip, unload, unload_from};
 use super::{Monotonic, edge_exponent, monotonic, normal_load, rule_on};
 use crate::error::{Error, Result};
 use crate::problem::{Coupling, Profile};
@@ -20,7 +22,7 @@ use crate::problem::{Coupling, Profile};
 /// Where the exact solvers stop answering, for the messages of refused loads.
 const COVERAGE: &str = "the exact solver covers the normal load, monotonic loading from \
     Q = 0 and the unloading and reloading branches where they keep one stick set with a slip \
-    zone at each end; the corner structure that the ply's unloading above about -0.48 Q* \
+    zone at each end (at bp = 0 with their full-stick ranges); the corner structure that the ply's unloading above about -0.48 Q* \
     and its reloading need (and strong coupling's unloading) is not built yet \
     (docs/theory_tangential.md sections 13 and 15). CycleMethod::LcpHistory \
     (ORTHOSLIP_CYCLE_METHOD_LCP_HISTORY) answers every load path";
@@ -47,6 +49,16 @@ pub(crate) enum Branch {
         flip: bool,
         data_c_error: f64,
         data_traction_error: f64,
+    },
+    /// bp = 0 only: a branch after a reversal in its full-stick range ((T13a), (T15a) of
+    /// docs/theory_tangential.md): p = p0 unchanged and q = q_d + ((Q - Q_d)/P) p0, with
+    /// `data` the state where the load reversed (a `Loading` or `Unloading` state, at Q_d)
+    /// and `qp` = Q/P, both in the contact's frame; `slip_at` is the first-slip load Q_s/P
+    /// of the branch (contact's frame), which bounds the range: Q lies between Q_d and Q_s.
+    Stuck {
+        data: Box<ExactPath>,
+        qp: f64,
+        slip_at: f64,
     },
 }
 
@@ -133,6 +145,7 @@ impl ExactPath {
             Branch::Normal => 0.0,
             Branch::Loading { m, flip } => sign(*flip) * m.qp,
             Branch::Unloading { u, flip, .. } => sign(*flip) * u.qp,
+            Branch::Stuck { qp, .. } => *qp,
         }
     }
 
@@ -170,11 +183,16 @@ impl ExactPath {
                     }
                 } else {
                     let data: Arc<dyn Start> = m.clone();
-                    Branch::Unloading {
-                        u: Arc::new(unload(&data, t, tol, ttol).map_err(|e| refused(&what, e))?),
-                        flip: *flip,
-                        data_c_error: m.c_error,
-                        data_traction_error: m.traction_error,
+                    match self.full_stick(&*data, *flip, t, qp) {
+                        Some(stuck) => stuck.map_err(|e| refused(&what, e))?,
+                        None => Branch::Unloading {
+                            u: Arc::new(
+                                unload(&data, t, tol, ttol).map_err(|e| refused(&what, e))?,
+                            ),
+                            flip: *flip,
+                            data_c_error: m.c_error,
+                            data_traction_error: m.traction_error,
+                        },
                     }
                 }
             }
@@ -197,12 +215,39 @@ impl ExactPath {
                 } else {
                     let inner: Arc<dyn Start> = u.clone();
                     let data: Arc<dyn Start> = Arc::new(Mirror { inner });
-                    Branch::Unloading {
-                        u: Arc::new(unload(&data, -t, tol, ttol).map_err(|e| refused(&what, e))?),
-                        flip: !*flip,
-                        data_c_error: u.c_error + data_c_error,
-                        data_traction_error: u.traction_error + data_traction_error,
+                    match self.full_stick(&*data, !*flip, -t, qp) {
+                        Some(stuck) => stuck.map_err(|e| refused(&what, e))?,
+                        None => Branch::Unloading {
+                            u: Arc::new(
+                                unload(&data, -t, tol, ttol).map_err(|e| refused(&what, e))?,
+                            ),
+                            flip: !*flip,
+                            data_c_error: u.c_error + data_c_error,
+                            data_traction_error: u.traction_error + data_traction_error,
+                        },
                     }
+                }
+            }
+            Branch::Stuck { data, slip_at, .. } => {
+                let qd = data.q_over_p();
+                let inside =
+                    (qp - qd) * (slip_at - qd) > 0.0 && (qp - qd).abs() <= (slip_at - qd).abs();
+                if inside {
+                    Branch::Stuck {
+                        data: data.clone(),
+                        qp,
+                        slip_at: *slip_at,
+                    }
+                } else {
+                    // Outside the full-stick range the path passes through Q_d, where the
+                    // state is the data's again (q = q_d), and a full-stick step slips
+                    // nowhere (dissipates nothing): the load is the data's own load to qp,
+                    // continuing its branch (beyond Q_d) or the slipping part of this one
+                    // (beyond Q_s). The data's D and dissipation are this state's.
+                    let mut from = (**data).clone();
+                    from.load(qp)?;
+                    *self = from;
+                    return Ok(());
                 }
             }
         };
@@ -220,18 +265,74 @@ impl ExactPath {
         Ok(())
     }
 
+    /// For bp = 0, the branch from this state (where the load reverses, seen through
+    /// `data` in the branch's frame, the contact's mirrored when `flip`) at the load `t` of
+    /// that frame (`qp` in the contact's), when `t` lies in the branch's full-stick range
+    /// ((T13a), (T15a): down to the first-slip load [`first_slip`], included): the state
+    /// q = q_d + ((Q - Q_d)/P) p0 with p = p0. None when bp > 0 or `t` lies below the
+    /// first slip (the slipping part, the unloading solver's). Err(NoAdmissibleSolution) if
+    /// that state exceeds the friction bound anywhere ([`Self::stuck_admissible`]).
+    fn full_stick(&self, data: &dyn Start, flip: bool, t: f64, qp: f64) -> Option<Result<Branch>> {
+        let qs = first_slip(data)?;
+        if t < qs {
+            return None;
+        }
+        let stuck = Branch::Stuck {
+            data: Box::new(self.clone()),
+            qp,
+            slip_at: sign(flip) * qs,
+        };
+        Some(self.stuck_admissible(&stuck).map(|()| stuck))
+    }
+
+    /// |q| <= mu p (T7) for a full-stick state q = q_d + ((Q - Q_d)/P) p0: q/p0 read at
+    /// [`STUCK_CHECKS`] Chebyshev points of the contact must lie in [-mu, mu], up to the data's
+    /// traction estimate (the first slip is located at the corner, where section 13 and 15
+    /// find the extreme of q_d/p0; this checks that no inner point reaches the bound first).
+    fn stuck_admissible(&self, stuck: &Branch) -> Result<()> {
+        let Branch::Stuck { data, qp, slip_at } = stuck else {
+            return Ok(());
+        };
+        let mu = self.k.mu;
+        let slack = data.estimates().1;
+        for i in 0..STUCK_CHECKS {
+            let theta = PI * (i as f64 + 0.5) / STUCK_CHECKS as f64;
+            // 1 + x and 1 - x with their digits: 1 -+ cos = 2 sin^2(theta/2), 2 cos^2(theta/2)
+            let (opx, omx) = (
+                2.0 * (0.5 * theta).sin().powi(2),
+                2.0 * (0.5 * theta).cos().powi(2),
+            );
+            let (p, q) = data.tractions(opx, omx);
+            let r = q / p + (qp - data.q_over_p());
+            if r.is_nan() || r.abs() > mu + slack {
+                return Err(Error::NoAdmissibleSolution(format!(
+                    "the full-stick state at Q/P = {qp} (first slip at Q/P = {slip_at} by the \
+                     corner's q/p0) has q/p = {r} at x = {} beyond mu = {mu}: the branch \
+                     slips first inside the contact, which the exact path does not carry",
+                    opx - 1.0
+                )));
+            }
+        }
+        Ok(())
+    }
+
     /// The state's own solution (in its own frame, the contact's mirrored when flipped).
     fn own(&self) -> &Solved {
         match &self.branch {
             Branch::Normal => &self.normal.state,
             Branch::Loading { m, .. } => &m.level.state,
             Branch::Unloading { u, .. } => &u.level.state,
+            Branch::Stuck { data, .. } => data.own(),
         }
     }
 
     /// (p, H[q]) at x given by (1 + x, 1 - x), in the contact's frame (mirrored:
     /// p~(x) = p(-x) and H[q~](x) = H[q](-x), section 15).
-    fn pressure_and_hq(&self, opx: f64, omx: f64) -> (f64, f64) {
+    pub(crate) fn pressure_and_hq(&self, opx: f64, omx: f64) -> (f64, f64) {
+        if let Branch::Stuck { data, .. } = &self.branch {
+            // p = p_d, and H[q] = H[q_d] since H[p0] = 0 on (-1, 1)
+            return data.pressure_and_hq(opx, omx);
+        }
         let s = self.own();
         let (o, m) = if self.flipped() {
             (omx, opx)
@@ -252,7 +353,8 @@ impl ExactPath {
     /// the zone, as admissibility asks). The estimate: twice mu times the step's largest
     /// slip (at the zone's contact end) times this state's traction estimate.
     fn step_dissipation(&self, prev: &ExactPath) -> (f64, f64) {
-        if matches!(self.branch, Branch::Normal) {
+        // the normal load, and full stick: no slip zone
+        if matches!(self.branch, Branch::Normal | Branch::Stuck { .. }) {
             return (0.0, 0.0);
         }
         let k = self.k;
@@ -307,6 +409,90 @@ impl ExactPath {
         (w, err)
     }
 
+    /// The slip of the solid relative to the punch over the load step from `prev` to this
+    /// state (units of pi B P; (T3): ds = de - dD), at points given as (1 + x, 1 - x), in the
+    /// contact's frame: zero on this state's stick set (stuck since `prev`), and in each slip
+    /// zone the integral of the step's slip slope -(bq dp + dH[q]) from the zone's stick end,
+    /// as [`Self::step_dissipation`] reads it. The points of a zone are integrated in one
+    /// running sum from the stick end towards the contact's end, with 16-point Gauss-Legendre
+    /// between neighbours and the graded rule on pieces that end at a zone end or kink of
+    /// either state (where the slope is singular).
+    pub(crate) fn step_slip(&self, prev: &ExactPath, points: &[(f64, f64)]) -> Vec<f64> {
+        use crate::numerics::quadrature::{gauss_legendre, graded_rule};
+        let mut out = vec![0.0; points.len()];
+        if matches!(self.branch, Branch::Normal | Branch::Stuck { .. }) {
+            return out;
+        }
+        let k = self.k;
+        let (c1, c2) = self.stick_set();
+        let mut bps = self.breakpoints();
+        bps.extend(prev.breakpoints());
+        let (gx, gw) = gauss_legendre(16);
+        for (left, width) in [(true, 1.0 + c1), (false, 1.0 - c2)] {
+            if width <= 0.0 {
+                continue;
+            }
+            let at = |o: f64| if left { (o, 2.0 - o) } else { (2.0 - o, o) };
+            let f = |o: f64| {
+                let (opx, omx) = at(o);
+                let (pa, ha) = prev.pressure_and_hq(opx, omx);
+                let (pb, hb) = self.pressure_and_hq(opx, omx);
+                let dslope = -(k.bq * (pb - pa) + hb - ha);
+                if left { dslope } else { -dslope }
+            };
+            // the zone's points by offset from the contact's end, from the stick end out
+            let mut mine: Vec<(f64, usize)> = points
+                .iter()
+                .enumerate()
+                .map(|(i, &(o, m))| (if left { o } else { m }, i))
+                .filter(|&(o, _)| o < width)
+                .collect();
+            if mine.is_empty() {
+                continue;
+            }
+            mine.sort_by(|a, b| b.0.total_cmp(&a.0));
+            let mut cuts: Vec<f64> = bps
+                .iter()
+                .map(|&(o, m)| if left { o } else { m })
+                .filter(|&o| o > 0.0 && o < width)
+                .collect();
+            cuts.push(width);
+            // every stop from the stick end down: (offset, point index or None for a cut)
+            let mut stops: Vec<(f64, Option<usize>)> = cuts.iter().map(|&c| (c, None)).collect();
+            stops.extend(mine.iter().map(|&(o, i)| (o, Some(i))));
+            stops.sort_by(|a, b| b.0.total_cmp(&a.0));
+            let (mut running, mut hi, mut hi_cut) = (0.0, width, true);
+            for (o, idx) in stops {
+                let is_cut = idx.is_none();
+                if o < hi {
+                    let piece: f64 = if hi_cut || is_cut {
+                        // nodes rounded onto a zone end (where H[q] is NaN) left out, as in
+                        // `unload::graded` (docs/theory_tangential.md section 18)
+                        graded_rule(o, hi, 0.1, 1e-15, 16)
+                            .into_iter()
+                            .filter(|&(t, _)| t > o && t < hi)
+                            .map(|(t, w)| w * f(t))
+                            .sum()
+                    } else {
+                        let h = 0.5 * (hi - o);
+                        gx.iter()
+                            .zip(&gw)
+                            .map(|(t, w)| h * w * f(o + h * (1.0 + t)))
+                            .sum()
+                    };
+                    // ds(o) = ds(hi) - int_o^hi f
+                    running -= piece;
+                }
+                hi = o;
+                hi_cut = is_cut;
+                if let Some(i) = idx {
+                    out[i] = running;
+                }
+            }
+        }
+        out
+    }
+
     /// The normal-load state of this path.
     fn normal_path(&self) -> ExactPath {
         ExactPath {
@@ -328,6 +514,9 @@ impl ExactPath {
             Branch::Normal => 0.0,
             Branch::Loading { .. } => self.surface_change(&self.normal_path(), x),
             Branch::Unloading { .. } => prev.punch + self.surface_change(prev, x),
+            // (T16) with the data as ref: e - e_d = -L[(Q - Q_d)/P p0] = (Q - Q_d)/P ln 2 / pi
+            // everywhere on the contact (L[p0] = -ln 2 / pi there, section 16)
+            Branch::Stuck { ref data, qp, .. } => data.punch + (qp - data.q_over_p()) * LN_2 / PI,
         }
     }
 
@@ -366,10 +555,17 @@ impl ExactPath {
 
     /// (p, q) at x given by (1 + x, 1 - x), in the contact's frame.
     pub(crate) fn tractions(&self, opx: f64, omx: f64) -> (f64, f64) {
+        if let Branch::Stuck { data, qp, .. } = &self.branch {
+            let (p, q) = data.tractions(opx, omx);
+            // p0 = 1/(pi sqrt(1 - x^2)) from the offsets, for its digits at the edges
+            let p0 = 1.0 / (PI * (opx * omx).sqrt());
+            return (p, q + (qp - data.q_over_p()) * p0);
+        }
         let own = |o: f64, m: f64| match &self.branch {
             Branch::Normal => self.normal.state.tractions(o, m),
             Branch::Loading { m: s, .. } => s.tractions(o, m),
             Branch::Unloading { u, .. } => u.tractions(o, m),
+            Branch::Stuck { .. } => unreachable!("handled above"),
         };
         if self.flipped() {
             let (p, q) = own(omx, opx);
@@ -383,6 +579,8 @@ impl ExactPath {
         match &self.branch {
             Branch::Normal => false,
             Branch::Loading { flip, .. } | Branch::Unloading { flip, .. } => *flip,
+            // its getters read the data, in the contact's frame
+            Branch::Stuck { .. } => false,
         }
     }
 
@@ -395,6 +593,7 @@ impl ExactPath {
                 (w1 - 1.0, c2)
             }
             Branch::Unloading { u, .. } => u.stick_set(),
+            Branch::Stuck { .. } => (-1.0, 1.0),
         };
         if self.flipped() { (-b, -a) } else { (a, b) }
     }
@@ -415,6 +614,8 @@ impl ExactPath {
                 u.c_error + data_c_error,
                 u.traction_error + data_traction_error,
             ),
+            // the closed-form shift adds nothing to the data's errors
+            Branch::Stuck { data, .. } => data.estimates(),
         }
     }
 
@@ -424,6 +625,8 @@ impl ExactPath {
             Branch::Normal => super::moment(edge_exponent(&self.k), &self.normal.state),
             Branch::Loading { m, .. } => m.moment(),
             Branch::Unloading { u, .. } => u.moment(),
+            // p is the data's
+            Branch::Stuck { data, .. } => return data.moment(),
         };
         if self.flipped() { -own } else { own }
     }
@@ -432,6 +635,8 @@ impl ExactPath {
     /// ends included, in the contact's frame.
     pub(crate) fn breakpoints(&self) -> Vec<(f64, f64)> {
         let s = match &self.branch {
+            // q_d's kinks (p0's edge singularities are the contact's ends)
+            Branch::Stuck { data, .. } => return data.breakpoints(),
             Branch::Normal => &self.normal.state,
             Branch::Loading { m, .. } => &m.level.state,
             Branch::Unloading { u, .. } => &u.level.state,
@@ -451,6 +656,11 @@ impl ExactPath {
         out
     }
 }
+
+/// Points of the contact (Chebyshev, denser towards the edges) at which a full-stick state
+/// is checked against the friction bound ([`ExactPath::stuck_admissible`]); one traction
+/// evaluation each, against the 9,000 of one (T16).
+const STUCK_CHECKS: usize = 400;
 
 /// Offset from a contact end (in units of a) inside which a non-finite slip slope counts as
 /// zero in [`ExactPath::step_dissipation`].

@@ -789,6 +789,15 @@ impl<D: Start + ?Sized> Unloading<D> {
 
 /// int_a^b f by 16-point Gauss-Legendre on pieces graded geometrically (ratio 0.1, 11
 /// levels) towards both ends, where the slip's slope carries the zone ends' exponents.
+///
+/// A node that rounds onto an end (x = a or x = b: its offset from that end, at least
+/// 2.7e-14 (b - a), is below half an ulp of the end's coordinate, i.e. b - a < 4e-9 at
+/// 1 - x = 1.4e-6) is left out: at a zone end the zones' H[q] is NaN (each zone's
+/// logarithm there is infinite; they cancel only in the limit), and the node's true
+/// position is not representable. Its weight is below 1.4e-13 (b - a) and the slope is
+/// bounded there (the tractions are, (U4)), so the share left out is below that times the
+/// slope's largest value. This was the NaN of the slip near the trailing zone's stick end
+/// (docs/theory_tangential.md section 18: at 1 - x within 1.4e-12 of 1 - a2 on the ply).
 fn graded(a: f64, b: f64, f: &dyn Fn(f64) -> f64) -> f64 {
     use crate::numerics::quadrature::gauss_legendre;
     let (xs, ws) = gauss_legendre(16);
@@ -798,7 +807,10 @@ fn graded(a: f64, b: f64, f: &dyn Fn(f64) -> f64) -> f64 {
         pieces.push(0.5 * len * 0.1f64.powi(j));
     }
     pieces.push(0.5 * len);
-    for j in (1..12).rev() {
+    // towards b: offsets len - 0.05 len, ..., len - 5e-12 len, increasing (the loop ran
+    // the other way, which left pieces of negative length and one 16-point piece over
+    // (0.5 len, len) at b's singularity: slips 1e-5 off, docs/theory_tangential.md section 18)
+    for j in 1..12 {
         pieces.push(len - 0.5 * len * 0.1f64.powi(j));
     }
     pieces.push(len);
@@ -809,6 +821,9 @@ fn graded(a: f64, b: f64, f: &dyn Fn(f64) -> f64) -> f64 {
             let s = u + 0.5 * (v - u) * (1.0 + t);
             // from the nearer end, so that offsets keep their digits
             let x = if s < 0.5 * len { a + s } else { b - (len - s) };
+            if x <= a || x >= b {
+                continue;
+            }
             total += 0.5 * (v - u) * w * f(x);
         }
     }
