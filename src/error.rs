@@ -51,5 +51,28 @@ impl fmt::Display for Error {
 
 impl std::error::Error for Error {}
 
+impl Error {
+    /// The same failure with its message (a tolerance miss: its detail) rewritten by `say`,
+    /// for a caller that adds where it happened; an inadmissible material and an internal
+    /// error keep theirs.
+    pub(crate) fn reworded(self, say: impl FnOnce(String) -> String) -> Error {
+        match self {
+            Error::InvalidArgument(m) => Error::InvalidArgument(say(m)),
+            Error::NoConvergence(m) => Error::NoConvergence(say(m)),
+            Error::NoAdmissibleSolution(m) => Error::NoAdmissibleSolution(say(m)),
+            Error::ToleranceNotMet {
+                estimate,
+                tolerance,
+                detail,
+            } => Error::ToleranceNotMet {
+                estimate,
+                tolerance,
+                detail: say(detail),
+            },
+            other => other,
+        }
+    }
+}
+
 /// Shorthand for results of this crate.
 pub type Result<T> = std::result::Result<T, Error>;

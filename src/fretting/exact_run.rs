@@ -14,22 +14,7 @@ use super::*;
 
 /// The error `e` of the exact path at `what`, said to come from a fretting run.
 fn in_run(what: &str, e: Error) -> Error {
-    let say = |m: String| format!("Fretting::solve with CycleMethod::Exact, {what}: {m}");
-    match e {
-        Error::InvalidArgument(m) => Error::InvalidArgument(say(m)),
-        Error::NoConvergence(m) => Error::NoConvergence(say(m)),
-        Error::NoAdmissibleSolution(m) => Error::NoAdmissibleSolution(say(m)),
-        Error::ToleranceNotMet {
-            estimate,
-            tolerance,
-            detail,
-        } => Error::ToleranceNotMet {
-            estimate,
-            tolerance,
-            detail: say(detail),
-        },
-        other => other,
-    }
+    e.reworded(|m| format!("Fretting::solve with CycleMethod::Exact, {what}: {m}"))
 }
 
 /// The grid's midpoints as (1 + x, 1 - x) with their digits.

@@ -89,27 +89,12 @@ pub(crate) struct ExactPath {
 
 /// The error `e` of the exact solver on `what`, with what the exact path covers.
 fn refused(what: &str, e: Error) -> Error {
-    let say = |m: String| {
+    e.reworded(|m| {
         format!(
             "CycleMethod::Exact (ORTHOSLIP_CYCLE_METHOD_EXACT): {what} is not answered ({m}); \
              {COVERAGE}"
         )
-    };
-    match e {
-        Error::InvalidArgument(m) => Error::InvalidArgument(say(m)),
-        Error::NoConvergence(m) => Error::NoConvergence(say(m)),
-        Error::NoAdmissibleSolution(m) => Error::NoAdmissibleSolution(say(m)),
-        Error::ToleranceNotMet {
-            estimate,
-            tolerance,
-            detail,
-        } => Error::ToleranceNotMet {
-            estimate,
-            tolerance,
-            detail: say(detail),
-        },
-        other => other,
-    }
+    })
 }
 
 impl ExactPath {

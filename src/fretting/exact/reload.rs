@@ -54,18 +54,12 @@ pub(crate) fn reload(
         .map(|mirrored| Reloading { mirrored })
         .map_err(|e| {
             // the unloading's messages speak of the mirrored frame: say so
-            let frame = |m: String| {
+            e.reworded(|m| {
                 format!(
                     "exact reloading to Q/P = {qp}, solved as the mirrored unloading \
                      (x -> -x, q -> -q, docs/theory_tangential.md section 15): {m}"
                 )
-            };
-            match e {
-                Error::InvalidArgument(m) => Error::InvalidArgument(frame(m)),
-                Error::NoConvergence(m) => Error::NoConvergence(frame(m)),
-                Error::NoAdmissibleSolution(m) => Error::NoAdmissibleSolution(frame(m)),
-                other => other,
-            }
+            })
         })
 }
 
