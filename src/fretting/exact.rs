@@ -739,18 +739,9 @@ impl Monotonic {
         let mut total = 0.0;
         for piece in pieces.windows(2) {
             let (lo, plen) = (piece[0], piece[1] - piece[0]);
-            // graded towards both ends of the piece
-            let mut cuts = vec![0.0];
-            for k in (1..12).rev() {
-                cuts.push(0.5 * plen * 0.1f64.powi(k));
-            }
-            cuts.push(0.5 * plen);
-            // increasing towards plen (the loop ran the other way: pieces of negative length,
-            // the same fault as `unload::graded`'s, section 18)
-            for k in 1..12 {
-                cuts.push(plen - 0.5 * plen * 0.1f64.powi(k));
-            }
-            cuts.push(plen);
+            // graded towards both ends of the piece, increasing (built the other way towards
+            // plen they gave pieces of negative length, section 18)
+            let cuts = crate::numerics::quadrature::graded_cuts(plen, 0.1, 11);
             for seg in cuts.windows(2) {
                 let (a, b) = (seg[0], seg[1]);
                 for (t, w) in xs.iter().zip(&ws) {

@@ -133,6 +133,19 @@ fn christoffel_weights(rec: &JacobiRecurrence, nodes: &[f64], mass: f64) -> Vec<
     sums.iter().map(|s| mass / s).collect()
 }
 
+/// The cuts of a piece of length `len` into panels graded geometrically towards both ends,
+/// as offsets from its start, increasing: 0, 0.5 len ratio^levels, ..., 0.5 len ratio, 0.5 len,
+/// len - 0.5 len ratio, ..., len - 0.5 len ratio^levels, len. For composite rules that map
+/// each panel's nodes from the piece's nearer end (its offsets keep their digits there).
+pub(crate) fn graded_cuts(len: f64, ratio: f64, levels: i32) -> Vec<f64> {
+    let mut cuts = vec![0.0];
+    cuts.extend((1..=levels).rev().map(|k| 0.5 * len * ratio.powi(k)));
+    cuts.push(0.5 * len);
+    cuts.extend((1..=levels).map(|k| len - 0.5 * len * ratio.powi(k)));
+    cuts.push(len);
+    cuts
+}
+
 /// Composite Gauss-Legendre rule for int_a^b f with integrable power singularities
 /// |x - a|^s, |x - b|^s (s > -1) at both ends: panels shrinking geometrically by `ratio`
 /// towards each end, down to a `depth` fraction of the half-length or 16 ulps of the ends
@@ -177,6 +190,26 @@ mod tests {
 
     fn rel(a: f64, b: f64) -> f64 {
         (a - b).abs() / b.abs()
+    }
+
+    /// The graded cuts increase from 0 to len, mirror each other about len / 2, and reach
+    /// 0.5 len ratio^levels from each end.
+    #[test]
+    fn graded_cuts_increase_and_mirror() {
+        let (len, ratio, levels) = (3.0, 0.1, 11);
+        let cuts = graded_cuts(len, ratio, levels);
+        assert_eq!(cuts.len(), 2 * levels as usize + 3);
+        assert!(cuts.windows(2).all(|w| w[0] < w[1]), "{cuts:?}");
+        let n = cuts.len();
+        for i in 0..n {
+            assert!((cuts[i] + cuts[n - 1 - i] - len).abs() < 1e-15 * len);
+        }
+        let nearest = 0.5 * len * ratio.powi(levels);
+        assert!(
+            (cuts[1] - nearest).abs() < 1e-15 * nearest,
+            "{} vs {nearest}",
+            cuts[1]
+        );
     }
 
     /// int (1-x)^a (1+x)^(b+j) = 2^(a+b+j+1) B(a+1, b+j+1): all-positive integrands, so the

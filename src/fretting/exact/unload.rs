@@ -799,21 +799,13 @@ impl<D: Start + ?Sized> Unloading<D> {
 /// slope's largest value. This was the NaN of the slip near the trailing zone's stick end
 /// (docs/theory_tangential.md section 18: at 1 - x within 1.4e-12 of 1 - a2 on the ply).
 fn graded(a: f64, b: f64, f: &dyn Fn(f64) -> f64) -> f64 {
-    use crate::numerics::quadrature::gauss_legendre;
+    use crate::numerics::quadrature::{gauss_legendre, graded_cuts};
     let (xs, ws) = gauss_legendre(16);
     let len = b - a;
-    let mut pieces = vec![0.0];
-    for j in (1..12).rev() {
-        pieces.push(0.5 * len * 0.1f64.powi(j));
-    }
-    pieces.push(0.5 * len);
-    // towards b: offsets len - 0.05 len, ..., len - 5e-12 len, increasing (the loop ran
-    // the other way, which left pieces of negative length and one 16-point piece over
-    // (0.5 len, len) at b's singularity: slips 1e-5 off, docs/theory_tangential.md section 18)
-    for j in 1..12 {
-        pieces.push(len - 0.5 * len * 0.1f64.powi(j));
-    }
-    pieces.push(len);
+    // increasing towards b too (cuts built the other way there left pieces of negative
+    // length and one 16-point piece over (0.5 len, len) at b's singularity: slips 1e-5 off,
+    // docs/theory_tangential.md section 18)
+    let pieces = graded_cuts(len, 0.1, 11);
     let mut total = 0.0;
     for piece in pieces.windows(2) {
         let (u, v) = (piece[0], piece[1]);
