@@ -11,7 +11,8 @@ use crate::numerics::quadrature::{gauss_jacobi, gauss_legendre};
 use crate::numerics::roots::secant;
 use crate::problem::Profile;
 
-fn ply() -> Coupling {
+/// The carbon/epoxy ply in plane stress at mu = 0.3 (the fretting tests' scene).
+pub(crate) fn ply() -> Coupling {
     Material::plane_stress(181e9, 10.3e9, 7.17e9, 0.28)
         .unwrap()
         .coupling(0.3)

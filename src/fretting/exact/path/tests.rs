@@ -4,18 +4,14 @@
 //! refinement is in `crate::fretting::tests`.
 
 use super::super::reload::tests::{t15, t15_root};
-use super::super::tests::{goodman_integral, jacobi_integral, t11};
+use super::super::tests::{goodman_integral, jacobi_integral, ply, t11};
 use super::super::unload::tests::t13;
 use super::*;
-use crate::Material;
 use crate::numerics::roots::secant;
 use std::f64::consts::{LN_2, PI};
 
 fn goodman() -> Coupling {
-    let k = Material::plane_stress(181e9, 10.3e9, 7.17e9, 0.28)
-        .unwrap()
-        .coupling(0.3);
-    Coupling { bp: 0.0, ..k }
+    Coupling { bp: 0.0, ..ply() }
 }
 
 /// Everything the path reports of its state, bit for bit.
@@ -297,9 +293,7 @@ fn goodman_punch_matches_the_closed_form() {
 /// 1e-5 asked), D against the grid LCP history is in `crate::fretting::tests`.
 #[test]
 fn ply_stick_set_moves_rigidly() {
-    let k = Material::plane_stress(181e9, 10.3e9, 7.17e9, 0.28)
-        .unwrap()
-        .coupling(0.3);
+    let k = ply();
     let mut path = ExactPath::new(&k, 1e-8, 1e-5).unwrap();
     let normal = path.clone();
     path.load(0.18).unwrap();
@@ -418,9 +412,7 @@ fn goodman_dissipation_against_the_grid() {
 #[test]
 #[ignore = "measurement: 1-2 min"]
 fn measure_ply_loading_dissipation() {
-    let k = Material::plane_stress(181e9, 10.3e9, 7.17e9, 0.28)
-        .unwrap()
-        .coupling(0.3);
+    let k = ply();
     let q_star = 0.18;
     let steps: Vec<usize> = std::env::var("ORTHOSLIP_EXACT_STEPS")
         .map(|v| v.split(',').map(|s| s.parse().unwrap()).collect())
@@ -459,9 +451,7 @@ fn measure_ply_loading_dissipation() {
 /// `measure_ply_loading_dissipation`).
 #[test]
 fn ply_loading_dissipation_approaches_the_grid() {
-    let k = Material::plane_stress(181e9, 10.3e9, 7.17e9, 0.28)
-        .unwrap()
-        .coupling(0.3);
+    let k = ply();
     let q_star = 0.18;
     let g40 = grid_dissipation(&k, 100, &[q_star], 40)[0];
     let g80 = grid_dissipation(&k, 100, &[q_star], 80)[0];
@@ -491,9 +481,7 @@ fn ply_loading_dissipation_approaches_the_grid() {
 #[test]
 #[ignore = "measurement: 1-6 min"]
 fn measure_ply_unloading_dissipation() {
-    let k = Material::plane_stress(181e9, 10.3e9, 7.17e9, 0.28)
-        .unwrap()
-        .coupling(0.3);
+    let k = ply();
     let q_star = 0.18;
     let mut loaded = ExactPath::new(&k, 1e-8, 1e-5).unwrap();
     loaded.load(q_star).unwrap();
@@ -527,9 +515,7 @@ fn measure_ply_unloading_dissipation() {
 /// every check fraction of the zone down to 1 - x = 1.4e-14, is a negative number.
 #[test]
 fn ply_slip_near_the_trailing_zone_end_is_a_number() {
-    let k = Material::plane_stress(181e9, 10.3e9, 7.17e9, 0.28)
-        .unwrap()
-        .coupling(0.3);
+    let k = ply();
     let mut path = ExactPath::new(&k, 1e-8, 1e-5).unwrap();
     path.load(0.18).unwrap();
     path.load(-0.18).unwrap();
