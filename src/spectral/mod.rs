@@ -383,33 +383,20 @@ impl First {
     /// The slope and the rate, measured on first use: level 1 again at lc + [`SLOPE_STEP`].
     fn measured(&mut self, k: Constants) -> Option<Sensitivity> {
         if self.measured.is_none() {
-            let lc = self.lc;
-            let e = StickEdge::from_logit(lc);
+            let e = StickEdge::from_logit(self.lc);
             let sizes = Sizes::at(FIRST_LEVEL, e.c, e.one_minus_c);
             let base = self.base(k)?.fixed.clone();
-            let shifted = sigma_at(k, lc + SLOPE_STEP, sizes)?.fixed;
-            let slope = (shifted.sigma - base.sigma) / SLOPE_STEP;
-            if slope == 0.0 || !slope.is_finite() {
-                return None;
-            }
-            let (mp, mq) = distance(&shifted, &base, &self.rules);
-            self.measured = Some(Sensitivity {
-                slope,
-                rate: (mp / SLOPE_STEP, mq / SLOPE_STEP),
-            });
+            self.measured_at(k, &base, sizes)?;
         }
         self.measured
     }
-}
 
-impl First {
     /// The slope and the rate measured at a level's own sizes: `cur`, solved at the starting
-    /// lc with `sizes`, against the same sizes at lc + [`SLOPE_STEP`] (one solve, in place of
-    /// level 1 twice, [`First::measured`]).
+    /// lc with `sizes`, against the same sizes at lc + [`SLOPE_STEP`] (one solve; at a known
+    /// edge in place of level 1 twice, [`First::measured`]).
     fn measured_at(&mut self, k: Constants, cur: &Fixed, sizes: Sizes) -> Option<Sensitivity> {
         if self.measured.is_none() {
-            let e = StickEdge::from_logit(self.lc + SLOPE_STEP);
-            let shifted = solve_fixed(k, e.c, e.one_minus_c, sizes).ok()?;
+            let shifted = sigma_at(k, self.lc + SLOPE_STEP, sizes)?.fixed;
             let slope = (shifted.sigma - cur.sigma) / SLOPE_STEP;
             if slope == 0.0 || !slope.is_finite() {
                 return None;
