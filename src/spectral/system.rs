@@ -48,7 +48,10 @@ pub(crate) struct Sizes {
     /// Columns X x^(2k) and i X x^(2k+1), k < bonded, on the stick zone ((X1)).
     pub(crate) bonded: usize,
     /// Factor on the collocation points per unknown ([`STICK_POINTS`], [`SLIP_POINTS`]):
-    /// 1 at level 1 and below and where c < [`DENSE_BELOW_C`], [`SPARSE_POINTS`] above.
+    /// 1 at level 1 and below and where c < [`DENSE_BELOW_C`], [`SPARSE_POINTS`] above. The
+    /// rule on c is here, with the sizes fixed by the starting c, so that sigma(lc) stays
+    /// smooth across the trial c of one search; g's rule ([`DENSE_BELOW_G`]) is fixed per
+    /// answer and applied at the assembly.
     pub(crate) points: f64,
 }
 
