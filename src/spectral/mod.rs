@@ -668,9 +668,6 @@ fn verdict(f: &Fixed, mu: f64, traction_tol: f64, delta: f64, parts: (f64, f64))
     let Some(noise) = admissible(f, mu) else {
         return Verdict::Inadmissible;
     };
-    if std::env::var("X_NOISE").is_ok() {
-        eprintln!("noise {noise:e} parts {parts:?} n {}", f.unknowns());
-    }
     let parts = (parts.0 + noise, parts.1 + mu * noise);
     if parts.0 + delta * parts.1 <= traction_tol {
         Verdict::Answer(parts)
