@@ -250,8 +250,9 @@ pub(crate) struct Hyp2f1 {
     e: f64,
     near_one: std::sync::OnceLock<NearOne>,
     /// The terms of the expansion about z = 1 that do not depend on z, in chunks of
-    /// [`CHUNK`] built on first use ([`Hyp2f1::near_one`]).
-    chunks: [std::sync::OnceLock<Chunk>; CHUNKS],
+    /// [`CHUNK`] built on first use ([`Hyp2f1::near_one`]); boxed, so that the function stays
+    /// small to move (the spectral bases hold about 20 of them).
+    chunks: [std::sync::OnceLock<Box<Chunk>>; CHUNKS],
 }
 
 /// The constants of the expansion about z = 1 (DLMF 15.8.4, see [`Hyp2f1::near_one`]).
@@ -379,10 +380,10 @@ impl Hyp2f1 {
                 dn += log_slope(nf + 1.0 - e, 2.0 * e);
                 r *= (a + nf) * (b + nf) / ((nf + 1.0) * (nf + 1.0 - e));
             }
-            Chunk {
+            Box::new(Chunk {
                 terms,
                 next: (r, [da, db, dn]),
-            }
+            })
         })
     }
 
