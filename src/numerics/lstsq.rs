@@ -230,24 +230,27 @@ impl Elimination {
         let keep: Vec<usize> = (0..cols).filter(|j| !pivots.contains(j)).collect();
         let m = keep.len();
         let rows = b.len();
+        // each constraint's multipliers on the kept columns, contiguous for the updates
+        let kept: Vec<Vec<f64>> = cons
+            .iter()
+            .map(|(k, _)| keep.iter().map(|&j| k[j]).collect())
+            .collect();
         let mut reduced = vec![0.0; rows * m];
-        let mut rhs = vec![0.0; rows];
-        for i in 0..rows {
+        let mut rhs = b.to_vec();
+        for (i, out) in reduced.chunks_exact_mut(m).enumerate() {
             let row = &a[i * cols..(i + 1) * cols];
-            for (jj, &j) in keep.iter().enumerate() {
-                reduced[i * m + jj] = row[j]
-                    - pivots
-                        .iter()
-                        .zip(&cons)
-                        .map(|(&pj, (k, _))| row[pj] * k[j])
-                        .sum::<f64>();
+            for (o, &j) in out.iter_mut().zip(&keep) {
+                *o = row[j];
             }
-            rhs[i] = b[i]
-                - pivots
-                    .iter()
-                    .zip(&cons)
-                    .map(|(&pj, (_, d))| row[pj] * d)
-                    .sum::<f64>();
+            for ((&pj, k), (_, d)) in pivots.iter().zip(&kept).zip(&cons) {
+                let f = row[pj];
+                if f != 0.0 {
+                    for (o, kj) in out.iter_mut().zip(k) {
+                        *o -= f * kj;
+                    }
+                    rhs[i] -= f * d;
+                }
+            }
         }
         Ok(Elimination {
             cons,

@@ -683,11 +683,10 @@ impl Assembled {
             .chain((0..n).filter(|&j| !keep[j]))
             .collect();
         let inner = keep.iter().filter(|&&k| k).count() + 1;
-        let a: Vec<f64> = self
-            .a
-            .chunks_exact(cols)
-            .flat_map(|row| order.iter().map(move |&j| row[j]))
-            .collect();
+        let mut a = Vec::with_capacity(self.a.len());
+        for row in self.a.chunks_exact(cols) {
+            a.extend(order.iter().map(|&j| row[j]));
+        }
         let cons = self
             .cons
             .iter()
