@@ -45,18 +45,26 @@ pub(crate) fn gauss_legendre(n: usize) -> (Vec<f64>, Vec<f64>) {
     gauss_jacobi(n, 0.0, 0.0)
 }
 
-/// Largest Gauss-Legendre rule kept by [`gauss_legendre_nodes`].
+/// Largest Gauss-Legendre rule kept by [`gauss_legendre_rule`].
 const MAX_CACHED_RULE: usize = 160;
 
-/// Nodes of the n-point Gauss-Legendre rule. Rules up to 160 nodes are computed once per
-/// process on first use and never changed afterwards (an immutable, lazily built table:
+/// The n-point Gauss-Legendre rule (nodes, weights). Rules up to 160 nodes are computed once
+/// per process on first use and never changed afterwards (an immutable, lazily built table:
 /// threads share it read-only); larger rules are computed on each call.
-pub(crate) fn gauss_legendre_nodes(n: usize) -> Cow<'static, [f64]> {
-    static RULES: [OnceLock<Vec<f64>>; MAX_CACHED_RULE] =
+pub(crate) fn gauss_legendre_rule(n: usize) -> Cow<'static, (Vec<f64>, Vec<f64>)> {
+    static RULES: [OnceLock<(Vec<f64>, Vec<f64>)>; MAX_CACHED_RULE] =
         [const { OnceLock::new() }; MAX_CACHED_RULE];
     match RULES.get(n) {
-        Some(rule) => rule.get_or_init(|| gauss_legendre(n).0).as_slice().into(),
-        None => gauss_legendre(n).0.into(),
+        Some(rule) => Cow::Borrowed(rule.get_or_init(|| gauss_legendre(n))),
+        None => Cow::Owned(gauss_legendre(n)),
+    }
+}
+
+/// Nodes of the n-point Gauss-Legendre rule ([`gauss_legendre_rule`]'s table).
+pub(crate) fn gauss_legendre_nodes(n: usize) -> Cow<'static, [f64]> {
+    match gauss_legendre_rule(n) {
+        Cow::Borrowed(rule) => Cow::Borrowed(rule.0.as_slice()),
+        Cow::Owned(rule) => Cow::Owned(rule.0),
     }
 }
 
@@ -341,6 +349,7 @@ mod tests {
     fn cached_legendre_nodes_are_the_rule() {
         for n in [1usize, 7, 159, 161] {
             assert_eq!(&*gauss_legendre_nodes(n), gauss_legendre(n).0.as_slice());
+            assert_eq!(*gauss_legendre_rule(n), gauss_legendre(n));
         }
     }
 

@@ -23,7 +23,7 @@ pub(crate) mod system;
 #[cfg(test)]
 mod tests;
 
-use crate::numerics::quadrature::{gauss_jacobi, gauss_legendre};
+use crate::numerics::quadrature::gauss_legendre_rule;
 use crate::problem::StickEdge;
 pub(crate) use system::Constants;
 use system::{Fixed, Sizes, solve_fixed, solve_fixed_pair};
@@ -219,7 +219,6 @@ pub(crate) fn from_edge(
     let mut first = First {
         lc,
         base: None,
-        rules: Rules::new(k.g),
         measured: None,
     };
     let fixed = if bound <= tol {
@@ -309,7 +308,7 @@ pub(crate) fn from_guess(
             slope = (next.fixed.sigma - cur.fixed.sigma) / step;
         }
         if e.one_minus_c < CONFIRM_BELOW {
-            let (dp, dq) = graded_distance(&next.fixed, &cur.fixed);
+            let (dp, dq) = graded_distance(&next.fixed, &cur.fixed).parts;
             rate = Some((dp + delta * dq) / step.abs());
         }
         cur = next;
@@ -350,12 +349,10 @@ const RATE_BOUND: (f64, f64) = (4.0, 8.0);
 /// those at the root, whatever the slope ((S9)).
 const SIGMA_RATE_BOUND: (f64, f64) = (30.0, 70.0);
 
-/// The starting lc with level 1 there (solved on first use), the Gauss rules of [`distance`]
-/// for its g, and, once measured, sigma's slope and the tractions' move per unit of lc.
+/// The starting lc with level 1 there (solved on first use) and, once measured, sigma's slope and the tractions' move per unit of lc.
 struct First {
     lc: f64,
     base: Option<Level>,
-    rules: Rules,
     measured: Option<Sensitivity>,
 }
 
@@ -401,7 +398,7 @@ impl First {
             if slope == 0.0 || !slope.is_finite() {
                 return None;
             }
-            let (mp, mq) = distance(&shifted, cur, &self.rules);
+            let (mp, mq) = distance(&shifted, cur).parts;
             self.measured = Some(Sensitivity {
                 slope,
                 rate: (mp / SLOPE_STEP, mq / SLOPE_STEP),
@@ -465,10 +462,11 @@ fn at_fixed_edge(
         // sigma's uncertainty: the larger of its differences from the coarser columns and
         // from the level below (both at lc)
         let mut dsigma = (cur.sigma - coarse.sigma).abs();
-        let (mut dp, mut dq) = distance(&cur, &coarse, &first.rules);
+        let compared = distance(&cur, &coarse);
+        let (mut dp, mut dq) = compared.parts;
         if let Some(b) = below.take() {
             dsigma = dsigma.max((cur.sigma - b.sigma).abs());
-            let (bp, bq) = distance(&cur, &b, &first.rules);
+            let (bp, bq) = distance(&cur, &b).parts;
             if bp + delta * bq < dp + delta * dq {
                 (dp, dq) = (bp, bq);
             }
@@ -515,7 +513,7 @@ fn at_fixed_edge(
         }
         let parts = (SAFETY * dp + moved.0, SAFETY * dq + moved.1);
         if parts.0 + delta * parts.1 <= traction_tol && cur.residual <= traction_tol {
-            match verdict(&cur, k.mu, traction_tol, delta, parts) {
+            match verdict(compared.noise, k.mu, traction_tol, delta, parts) {
                 Verdict::Answer(parts) => {
                     return Some(Spectral {
                         edge,
@@ -606,18 +604,19 @@ fn newton_ladder(
         }
         let distance_c = StickEdge::from_logit(root).distance(StickEdge::from_logit(prev_root));
         let error = SAFETY * (distance_c + c * w * (step.abs() + prev_step.abs()));
-        let (dp, dq) = if w < CONFIRM_BELOW {
+        let compared = if w < CONFIRM_BELOW {
             graded_distance(&cur, &prev)
         } else {
-            distance(&cur, &prev, &first.rules)
+            distance(&cur, &prev)
         };
+        let (dp, dq) = compared.parts;
         let parts = (
             SAFETY * (dp + rate.0 * step.abs()),
             SAFETY * (dq + rate.1 * step.abs()),
         );
         if error <= tol && parts.0 + delta * parts.1 <= traction_tol && cur.residual <= traction_tol
         {
-            match verdict(&cur, k.mu, traction_tol, delta, parts) {
+            match verdict(compared.noise, k.mu, traction_tol, delta, parts) {
                 Verdict::Answer(parts) => {
                     let answer = Spectral {
                         edge,
@@ -662,10 +661,17 @@ enum Verdict {
     Inadmissible,
 }
 
-/// The verdict on a level whose estimates `parts` meet `traction_tol`: the noise, relative
-/// to p, is added to the estimate (int p = 1, so it is an L1 error of that size).
-fn verdict(f: &Fixed, mu: f64, traction_tol: f64, delta: f64, parts: (f64, f64)) -> Verdict {
-    let Some(noise) = admissible(f, mu) else {
+/// The verdict on a level whose estimates `parts` meet `traction_tol`, from its rounding
+/// noise as [`distance`] saw it (None: not admissible): the noise, relative to p, is added to
+/// the estimate (int p = 1, so it is an L1 error of that size).
+fn verdict(
+    noise: Option<f64>,
+    mu: f64,
+    traction_tol: f64,
+    delta: f64,
+    parts: (f64, f64),
+) -> Verdict {
+    let Some(noise) = noise else {
         return Verdict::Inadmissible;
     };
     let parts = (parts.0 + noise, parts.1 + mu * noise);
@@ -676,59 +682,92 @@ fn verdict(f: &Fixed, mu: f64, traction_tol: f64, delta: f64, parts: (f64, f64))
     }
 }
 
-/// Gauss points per zone of [`distance`].
+/// Gauss-Legendre points per zone of [`distance`].
 const DISTANCE_POINTS: usize = 48;
 
-/// The Gauss rules of [`distance`] for the edge exponent g, built once per answer.
-pub(crate) struct Rules {
-    legendre: (Vec<f64>, Vec<f64>),
-    jacobi: (Vec<f64>, Vec<f64>),
+/// What [`distance`] measures between a level and another solution, and what it sees of the
+/// level on the way.
+#[derive(Clone, Copy)]
+struct Compared {
+    /// (int |dp|, int |dq~|) over (-1, 1).
+    parts: (f64, f64),
+    /// The level's rounding noise, the largest at the rule's points
+    /// ([`Fixed::probe_both`]), or None where it is not admissible there.
+    noise: Option<f64>,
 }
 
-impl Rules {
-    pub(crate) fn new(g: f64) -> Self {
-        Rules {
-            legendre: gauss_legendre(DISTANCE_POINTS),
-            jacobi: gauss_jacobi(DISTANCE_POINTS, -g, 0.0),
+/// The admissibility check over a rule's points: p > 0 everywhere and |q| <= mu p on the
+/// stick zone (to 1e-6 relative), with the largest rounding noise.
+struct Check {
+    mu: f64,
+    noise: Option<f64>,
+}
+
+impl Check {
+    fn new(mu: f64) -> Self {
+        Check {
+            mu,
+            noise: Some(0.0),
         }
+    }
+
+    fn see(&mut self, at: &points::Pt, (p, q, noise): (f64, f64, f64)) {
+        let ok = p > 0.0 && (!at.on_stick() || q.abs() <= self.mu * p * (1.0 + 1e-6));
+        self.noise = self.noise.filter(|_| ok).map(|n| n.max(noise));
     }
 }
 
-/// (int |dp|, int |dq|) over (-1, 1) between two levels' tractions (the norm of
-/// [`crate::problem::traction_distance`]), each zone by a Gauss rule in its own variable: on
-/// the stick zone Gauss-Legendre in tau = x / c, on the slip zone Gauss-Jacobi in s for the
-/// edge weight (1 - s)^-g (the integrand divided by it). Both levels are evaluated at the
-/// same x: their stick edges differ by the levels' error in c.
-fn distance(a: &Fixed, b: &Fixed, rules: &Rules) -> (f64, f64) {
+/// (int |dp|, int |dq|) over (-1, 1) between a level `a` and another solution `b` (the norm
+/// of [`crate::problem::traction_distance`]), with `a`'s admissibility and noise at the same
+/// points. Each zone by [`DISTANCE_POINTS`] Gauss-Legendre points in its own variable: on the
+/// stick zone tau = x / c over its half (0, 1); on the slip zone u with 1 - x = (1 - c) u^m,
+/// m = 1 / (1 - g), in which the edge's (1 - x)^-g dx is (1 - c) m du, so the tractions'
+/// edge singularity leaves a smooth integrand. Each solution is evaluated at its own offsets
+/// from its own stick edge (theirs differ by the levels' error in c).
+fn distance(a: &Fixed, b: &Fixed) -> Compared {
+    use points::Pt;
     let (c, w, g) = (a.basis.c, a.basis.w, a.basis.k.g);
+    let rule = gauss_legendre_rule(DISTANCE_POINTS);
+    let (t, wt) = (&rule.0, &rule.1);
+    let mut work = Vec::new();
+    let mut check = Check::new(a.basis.k.mu);
     let (mut dp, mut dq) = (0.0, 0.0);
-    let (t, wt) = &rules.legendre;
     for (&t, &wt) in t.iter().zip(wt) {
-        // tau in (0, 1): the half of the stick zone
         let x = 0.5 * c * (1.0 + t);
-        let ((pa, qa), (pb, qb)) = a.at_both(b, x);
+        let ((pa, qa, noise), (pb, qb)) = a.probe_both(b, |f| Pt::at(x, f.basis.c), &mut work);
+        check.see(&Pt::at(x, c), (pa, qa, noise));
         dp += 0.5 * c * wt * (pa - pb).abs();
         dq += 0.5 * c * wt * (qa - qb).abs();
     }
-    let (s, ws) = &rules.jacobi;
-    for (&s, &ws) in s.iter().zip(ws) {
-        let weight = (1.0 - s).powf(-g);
-        let ((pa, qa), (pb, qb)) = a.at_both_slip(b, 0.5 * w * (1.0 - s));
-        dp += 0.5 * w * ws * (pa - pb).abs() / weight;
-        dq += 0.5 * w * ws * (qa - qb).abs() / weight;
+    let m = 1.0 / (1.0 - g);
+    for (&t, &wt) in t.iter().zip(wt) {
+        let u = 0.5 * (1.0 + t);
+        let omx = w * u.powf(m);
+        let ((pa, qa, noise), (pb, qb)) =
+            a.probe_both(b, |f| Pt::from_end(omx, f.basis.w), &mut work);
+        check.see(&Pt::from_end(omx, w), (pa, qa, noise));
+        let jac = 0.5 * wt * w * m * u.powf(m - 1.0);
+        dp += jac * (pa - pb).abs();
+        dq += jac * (qa - qb).abs();
     }
-    (2.0 * dp, 2.0 * dq)
+    Compared {
+        parts: (2.0 * dp, 2.0 * dq),
+        noise: check.noise,
+    }
 }
 
 /// [`distance`] for a thin slip zone (1 - c < [`CONFIRM_BELOW`]), where the stick zone's
 /// tractions vary on the scale 1 - c next to x = c and 48 Gauss points in tau do not see it:
 /// 20-point Gauss-Legendre panels graded by factors of 3 in the distance from x = c (on both
 /// sides, from 1e-14 of the zone) and from x = 1, and one panel over the stick zone's inner
-/// half.
-fn graded_distance(a: &Fixed, b: &Fixed) -> (f64, f64) {
+/// half; `a`'s admissibility and noise at the same points.
+fn graded_distance(a: &Fixed, b: &Fixed) -> Compared {
     use points::Pt;
     let (c, w) = (a.basis.c, a.basis.w);
-    let (t, wt) = gauss_legendre(20);
+    let rule = gauss_legendre_rule(20);
+    let (t, wt) = (&rule.0, &rule.1);
+    let mut work = Vec::new();
+    let mut check = Check::new(a.basis.k.mu);
     let (mut sp, mut sq) = (0.0, 0.0);
     // panels (kind, d_lo, d_hi) in the offset d from x = c (kinds 0, 2), 0 (1) or 1 (3)
     let mut panels: Vec<(u8, f64, f64)> = Vec::new();
@@ -747,7 +786,7 @@ fn graded_distance(a: &Fixed, b: &Fixed) -> (f64, f64) {
     grade(&mut panels, 2, w);
     grade(&mut panels, 3, w);
     for (kind, lo, hi) in panels {
-        for (x, ww) in t.iter().zip(&wt) {
+        for (x, ww) in t.iter().zip(wt) {
             let d = lo + (hi - lo) * 0.5 * (x + 1.0);
             let pt = match kind {
                 0 => Pt {
@@ -767,39 +806,14 @@ fn graded_distance(a: &Fixed, b: &Fixed) -> (f64, f64) {
                 },
                 _ => Pt::from_end(d, w),
             };
-            let ((pa, qa), (pb, qb)) = a.eval_both(b, &pt);
+            let ((pa, qa, noise), (pb, qb)) = a.probe_both(b, |_| pt, &mut work);
+            check.see(&pt, (pa, qa, noise));
             sp += ww * 0.5 * (hi - lo) * (pa - pb).abs();
             sq += ww * 0.5 * (hi - lo) * (qa - qb).abs();
         }
     }
-    (2.0 * sp, 2.0 * sq)
-}
-
-/// Points per zone of the admissibility check.
-const CHECK_POINTS: usize = 64;
-
-/// Whether the answer is admissible, and its rounding noise: p > 0 everywhere and
-/// |q| <= mu p on the stick zone (to 1e-6 relative), at Chebyshev points of each zone; the
-/// noise is the largest of [`Fixed::eval_with_noise`] there.
-fn admissible(f: &Fixed, mu: f64) -> Option<f64> {
-    let (c, w) = (f.basis.c, f.basis.w);
-    let mut noise = 0.0f64;
-    for i in 0..CHECK_POINTS {
-        let th = (i as f64 + 0.5) * std::f64::consts::PI / CHECK_POINTS as f64;
-        // the slip points from their offsets (x = c + w s^2 rounds to 1 where w is below
-        // an ulp of 1 per point)
-        let (sin2, cos2) = ((0.5 * th).sin().powi(2), (0.5 * th).cos().powi(2));
-        let (xs, xl) = (c * (0.5 * th).sin(), c + w * sin2);
-        let stick = f.eval_with_noise(&points::Pt::at(xs, c));
-        let slip = f.eval_with_noise(&points::Pt {
-            x: xl,
-            omx: w * cos2,
-            xmc: w * sin2,
-        });
-        if !(stick.0 > 0.0 && stick.1.abs() <= mu * stick.0 * (1.0 + 1e-6) && slip.0 > 0.0) {
-            return None;
-        }
-        noise = noise.max(stick.2).max(slip.2);
+    Compared {
+        parts: (2.0 * sp, 2.0 * sq),
+        noise: check.noise,
     }
-    Some(noise)
 }

@@ -761,69 +761,55 @@ impl Fixed {
         (p, q)
     }
 
-    /// (p, q) at a point, and their rounding noise relative to p: the machine epsilon times
-    /// sum |a_j phi_j(x)| / p(x) for p, and the same for q relative to mu p on the stick zone
-    /// (|q| <= mu p there; on the slip zone q = mu p is exact), the larger of the two. The
-    /// frame's columns are near-dependent, so its coefficients can be large and cancel
-    /// (docs/theory_spectral.md (R2)).
-    /// [`Fixed::at`] of this solution and of `other` at x, each on the stick side of its own
-    /// stick edge: the columns evaluated once where both come from one assembly
-    /// ([`solve_fixed_pair`]).
-    pub(crate) fn at_both(&self, other: &Fixed, x: f64) -> ((f64, f64), (f64, f64)) {
-        if Arc::ptr_eq(&self.basis, &other.basis) {
-            self.eval_both(other, &Pt::at(x, self.basis.c))
-        } else {
-            (self.at(x), other.at(x))
-        }
+    /// (p, q) at a point, and their rounding noise relative to p ([`Fixed::combine`]).
+    pub(crate) fn eval_with_noise(&self, p: &Pt) -> (f64, f64, f64) {
+        let mut work = Vec::new();
+        self.columns_into(p, &mut work);
+        self.combine(p, &work)
     }
 
-    /// [`Fixed::at_both`] at the slip point with 1 - x = `omx`, each solution's offset
-    /// x - c from its own slip width (x - c = w - omx; from a rounded x it would lose
-    /// eps / (1 - c) of the zone, and x rounds to 1 where 1 - c is below an ulp per point).
-    pub(crate) fn at_both_slip(&self, other: &Fixed, omx: f64) -> ((f64, f64), (f64, f64)) {
-        let pt = |f: &Fixed| Pt::from_end(omx, f.basis.w);
-        if Arc::ptr_eq(&self.basis, &other.basis) {
-            self.eval_both(other, &pt(self))
+    /// This solution's (p, q) with their noise, and `other`'s (p, q), each at its own point
+    /// `at(solution)`, the columns' values in the reusable buffer `work`: evaluated once
+    /// where both come from one assembly ([`solve_fixed_pair`]), whose point is this one's.
+    pub(crate) fn probe_both(
+        &self,
+        other: &Fixed,
+        at: impl Fn(&Fixed) -> Pt,
+        work: &mut Vec<f64>,
+    ) -> ((f64, f64, f64), (f64, f64)) {
+        let p = at(self);
+        self.columns_into(&p, work);
+        let mine = self.combine(&p, work);
+        let (p_other, q_other, _) = if Arc::ptr_eq(&self.basis, &other.basis) {
+            other.combine(&p, work)
         } else {
-            (self.eval(&pt(self)), other.eval(&pt(other)))
-        }
-    }
-
-    /// (p, q) of this solution and of `other` at the point p (its offsets taken for both):
-    /// the columns evaluated once where both come from one assembly ([`solve_fixed_pair`]).
-    pub(crate) fn eval_both(&self, other: &Fixed, p: &Pt) -> ((f64, f64), (f64, f64)) {
-        if !Arc::ptr_eq(&self.basis, &other.basis) {
-            return (self.eval(p), other.eval(p));
-        }
-        let work = self.columns_at(p);
-        let (pv, qv) = work.split_at(self.coef.len());
-        let mu = self.basis.k.mu;
-        let at = |coef: &[f64]| {
-            let value: f64 = pv.iter().zip(coef).map(|(v, a)| v * a).sum();
-            let q = if p.on_stick() {
-                qv.iter().zip(coef).map(|(v, a)| v * a).sum()
-            } else {
-                mu * value
-            };
-            (value, q)
+            let p = at(other);
+            other.columns_into(&p, work);
+            other.combine(&p, work)
         };
-        (at(&self.coef), at(&other.coef))
+        (mine, (p_other, q_other))
     }
 
-    /// The columns' values at a point: their p parts, then their q parts.
-    fn columns_at(&self, p: &Pt) -> Vec<f64> {
+    /// The columns' values at a point into `work`: their p parts, then their q parts (and the
+    /// transforms' scratch after them).
+    fn columns_into(&self, p: &Pt, work: &mut Vec<f64>) {
         let n = self.coef.len();
-        let mut work = vec![0.0; 2 * n + self.basis.scratch_len()];
+        work.clear();
+        work.resize(2 * n + self.basis.scratch_len(), 0.0);
         let (pv, rest) = work.split_at_mut(n);
         let (qv, buf) = rest.split_at_mut(n);
         self.basis.tractions_row(p, pv, qv, buf);
-        work.truncate(2 * n);
-        work
     }
 
-    pub(crate) fn eval_with_noise(&self, p: &Pt) -> (f64, f64, f64) {
-        let work = self.columns_at(p);
-        let (pv, qv) = work.split_at(self.coef.len());
+    /// (p, q) at the point `p` from the columns' values in `work` ([`Fixed::columns_into`]),
+    /// and their rounding noise relative to p: the machine epsilon times sum |a_j phi_j(x)| /
+    /// p(x) for p, and the same for q relative to mu p on the stick zone (|q| <= mu p there;
+    /// on the slip zone q = mu p is exact), the larger of the two. The frame's columns are
+    /// near-dependent, so its coefficients can be large and cancel
+    /// (docs/theory_spectral.md (R2)).
+    fn combine(&self, p: &Pt, work: &[f64]) -> (f64, f64, f64) {
+        let n = self.coef.len();
+        let (pv, qv) = (&work[..n], &work[n..2 * n]);
         let (mut value, mut size) = (0.0, 0.0);
         for (v, a) in pv.iter().zip(&self.coef) {
             value += v * a;

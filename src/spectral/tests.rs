@@ -48,7 +48,7 @@ fn mid_range_meets_its_estimates() {
             "({b}, {mu}): c off by {true_c:e}, estimate {:e}",
             s.error
         );
-        let (dp, dq) = distance(&s.fixed, &fine.fixed, &Rules::new(k.g));
+        let (dp, dq) = distance(&s.fixed, &fine.fixed).parts;
         let est = s.traction_parts.0 + s.traction_parts.1;
         let fine_est = fine.traction_parts.0 + fine.traction_parts.1;
         assert!(
@@ -211,7 +211,6 @@ fn sensitivity_bounds_hold() {
         let mut first = First {
             lc,
             base: Some(base),
-            rules: Rules::new(k.g),
             measured: None,
         };
         let s = first.measured(k).expect("measured");
