@@ -201,7 +201,7 @@ fn serves(k: Constants, lc: f64) -> bool {
 /// up to [`MAX_LEVEL`] gets there or the answer is not admissible (the panels answer then).
 ///
 /// Where `bound` <= `tol`, [`at_fixed_edge`] keeps lc, with sigma's slope and the tractions'
-/// move per unit of lc bounded ([`SLOPE_FLOOR`], [`RATE_BOUND`]) or, where the bounds do not
+/// move per unit of lc bounded ([`SLOPE_FLOOR`], [`SENSITIVITY_BOUNDS`]) or, where the bounds do not
 /// decide, measured at the level that needs them ([`First::measured_at`]); else, or where
 /// the table's c does not serve, [`newton_ladder`] moves lc from level 1 at lc with the
 /// measured slope.
@@ -323,31 +323,54 @@ pub(crate) fn from_guess(
 /// (b* = 0.25, c = 4.2e-5) slope / b* was 0.029. The bound is 0.0125, under half of that.
 const SLOPE_FLOOR: f64 = 0.0125;
 
-/// Upper bounds on the tractions' move per unit of lc, (int |dp|, int |dq~|) / dlc, where the
-/// bases serve. Measured at level 1 over lc + [`SLOPE_STEP`] on the 604 served points of a
-/// 53 x 53 grid of the table's coordinates: at most 1.86 and 4.14 (b* = 0.96, g = 0.03, the
-/// served corner of small g and large b*; below 1e-3 where c < 2e-4). The bounds are about
-/// twice those.
-const RATE_BOUND: (f64, f64) = (4.0, 8.0);
+/// Upper bounds, per band of b*, on the tractions' move per unit of lc,
+/// (int |dp|, int |dq~|) / dlc, and per unit of sigma at a fixed level's sizes,
+/// (int |dp|, int |dq~|) / |d sigma| = rate / |slope|, where the bases serve: (b* below, per
+/// lc, per sigma). Both grow with b*, the coupling through which c moves the tractions at
+/// all. Measured at levels 1 and 2 over lc + [`SLOPE_STEP`] on the 918 served nodes of a
+/// 53 x 53 grid of the table's coordinates (b* = 0.02 .. 0.99, c = 1e-4 .. 1 - 1e-5), the
+/// largest per band:
+///
+/// | b* | points | per lc, p | q~ | per sigma, p | q~ |
+/// |---|---|---|---|---|---|
+/// | 0 .. 0.1 | 16 | 0.00122 | 0.0142 | 0.171 | 1.98 |
+/// | 0.1 .. 0.2 | 18 | 0.00731 | 0.0358 | 0.422 | 2.06 |
+/// | 0.2 .. 0.3 | 36 | 0.019 | 0.0617 | 0.689 | 2.23 |
+/// | 0.3 .. 0.4 | 49 | 0.0369 | 0.0974 | 0.979 | 2.57 |
+/// | 0.4 .. 0.5 | 68 | 0.0774 | 0.217 | 1.46 | 4.08 |
+/// | 0.5 .. 0.6 | 64 | 0.143 | 0.506 | 2.1 | 7.37 |
+/// | 0.6 .. 0.7 | 61 | 0.234 | 0.971 | 2.8 | 11.6 |
+/// | 0.7 .. 0.8 | 96 | 0.412 | 2.02 | 3.8 | 18.5 |
+/// | 0.8 .. 0.9 | 126 | 1.11 | 3.83 | 8 | 27.1 |
+/// | 0.9 .. 0.95 | 119 | 2.32 | 5.5 | 14.6 | 36.9 |
+/// | 0.95 .. 0.99 | 265 | 2.46 | 4.09 | 13.7 | 24.2 |
+///
+/// The bounds are twice the largest. (One bound for the whole plane, (4, 8) per lc and
+/// (30, 70) per sigma, was near the largest only at b* >= 0.8; at b* = 0.33, c = 0.09 the
+/// move per lc measured 3.4e-3 against 4, so every speed scene at tractions to 1e-10 measured
+/// the slope and the move, one more solve.)
+const SENSITIVITY_BOUNDS: [(f64, (f64, f64), (f64, f64)); 11] = [
+    (0.1, (0.0025, 0.029), (0.35, 4.0)),
+    (0.2, (0.015, 0.072), (0.85, 4.2)),
+    (0.3, (0.038, 0.124), (1.4, 4.5)),
+    (0.4, (0.074, 0.195), (2.0, 5.2)),
+    (0.5, (0.155, 0.434), (2.9, 8.2)),
+    (0.6, (0.286, 1.01), (4.2, 14.8)),
+    (0.7, (0.468, 1.94), (5.6, 23.2)),
+    (0.8, (0.824, 4.04), (7.6, 37.0)),
+    (0.9, (2.22, 7.66), (16.0, 54.2)),
+    (0.95, (4.64, 11.0), (29.2, 73.8)),
+    (f64::INFINITY, (4.92, 8.18), (27.4, 48.4)),
+];
 
-/// Upper bounds on the tractions' move per unit of sigma at a fixed level's sizes,
-/// (int |dp|, int |dq~|) / |d sigma| = rate / |slope|, where the bases serve. Measured at
-/// level 1 over lc + [`SLOPE_STEP`] on the 919 served points of a 53 x 53 grid of the
-/// table's coordinates, the largest ratio per band of g:
-///
-/// | g | points | p | q~ |
-/// |---|---|---|---|
-/// | 0.002 .. 0.01 | 193 | 14.6 | 33.0 |
-/// | 0.01 .. 0.03 | 134 | 13.7 | 35.5 |
-/// | 0.03 .. 0.1 | 158 | 11.5 | 28.0 |
-/// | 0.1 .. 0.3 | 189 | 7.2 | 16.0 |
-/// | 0.3 .. 0.5 | 245 | 2.4 | 4.3 |
-///
-/// (at most 0.78 and 2.9 where 1 - c < 1e-3, 0.06 and 0.07 where c < 1e-3). The bounds are
-/// about twice the largest. A level's sigma at the starting lc bounds that lc's distance to
-/// the root, |sigma| / |slope|, so the tractions there are within this ratio times |sigma| of
-/// those at the root, whatever the slope ((S9)).
-const SIGMA_RATE_BOUND: (f64, f64) = (30.0, 70.0);
+/// The bounds of [`SENSITIVITY_BOUNDS`] at b*: (per lc, per sigma).
+fn sensitivity_bounds(b: f64) -> ((f64, f64), (f64, f64)) {
+    let &(_, by_lc, by_sigma) = SENSITIVITY_BOUNDS
+        .iter()
+        .find(|r| b < r.0)
+        .unwrap_or(&SENSITIVITY_BOUNDS[SENSITIVITY_BOUNDS.len() - 1]);
+    (by_lc, by_sigma)
+}
 
 /// The starting lc with level 1 there (solved on first use) and, once measured, sigma's slope and the tractions' move per unit of lc.
 struct First {
@@ -424,8 +447,8 @@ impl First {
 /// The tractions' move to the root is the smaller of two bounds on it ((S9)): the move per lc
 /// times the bound on lc's distance ([`SAFETY`] times each), and the move per sigma times
 /// the level's |sigma| plus [`SAFETY`] times its uncertainty. The slope,
-/// the move per lc and the move per sigma are the bounds [`SLOPE_FLOOR`], [`RATE_BOUND`] and
-/// [`SIGMA_RATE_BOUND`] (a smaller slope and larger moves only make the tests stricter) until
+/// the move per lc and the move per sigma are the bounds [`SLOPE_FLOOR`] and
+/// [`SENSITIVITY_BOUNDS`] (a smaller slope and larger moves only make the tests stricter) until
 /// the edge test fails with them, or a level's tractions meet the tolerance but not with the
 /// move added while the bound by lc's distance alone exceeds it; then the slope and the move
 /// per lc are measured at the level's sizes ([`First::measured_at`]) and the test is
@@ -487,7 +510,7 @@ fn at_fixed_edge(
         let shift = |s: Option<Sensitivity>, sigma: f64| {
             let (by_lc, by_sigma) = match s {
                 Some(s) => (s.rate, (s.rate.0 / s.slope.abs(), s.rate.1 / s.slope.abs())),
-                None => (RATE_BOUND, SIGMA_RATE_BOUND),
+                None => sensitivity_bounds(k.b),
             };
             (
                 SAFETY * (by_lc.0 * uncertainty).min(by_sigma.0 * sigma),
