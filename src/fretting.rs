@@ -217,7 +217,7 @@ pub struct Peak {
     pub x: f64,
     /// Error estimate of the value. The grid: against its check runs. Exact: the largest
     /// estimate of the node values (docs/theory_tangential.md (T18d)), plus at an interior
-    /// node the rise of the parabola through it and its neighbours; +infinity at a node next
+    /// node twice the rise of the parabola through it and its neighbours; +infinity at a node next
     /// to a contact edge, towards which the profile grows without bound (tau_max follows the
     /// pressure's edge singularity, the slip amplitude stays finite).
     pub error: f64,

@@ -959,3 +959,42 @@ fn exact_cycle_energy_against_the_fine_grid() {
         assert!((exact[i] - r).abs() <= e, "{what}");
     }
 }
+
+/// The exact run's peaks (docs/theory_tangential.md (T18d)) on profiles known along the
+/// contact, sampled at the nodes of n = 50 with a node error: an inner smooth peak (the
+/// value's and the position's estimates hold, the value's within 1e2 of its true error), a
+/// profile rising to an edge (unbounded along the contact), and profiles zero at every node.
+#[test]
+fn exact_peaks_against_known_profiles() {
+    let n = 50;
+    let h = 1.0 / n as f64;
+    let nodes: Vec<f64> = (0..2 * n).map(|i| -1.0 + (i as f64 + 0.5) * h).collect();
+    let at = |f: &dyn Fn(f64) -> f64| nodes.iter().map(|&x| f(x)).collect::<Vec<f64>>();
+    let err = vec![1e-9; nodes.len()];
+    for centre in [0.3013, -0.5571, 0.0] {
+        // largest value 2 at the centre
+        let bump = move |x: f64| 2.0 / (1.0 + 40.0 * (x - centre).powi(2));
+        let pk = exact_run::node_peak(&at(&bump), &err, &nodes, h);
+        let (dv, dx) = (2.0 - pk.value, (centre - pk.x).abs());
+        println!(
+            "centre {centre}: value error {dv:.2e} (estimate {:.2e}), position {dx:.2e} ({:.2e})",
+            pk.error, pk.x_error
+        );
+        assert!(dv <= pk.error && pk.error < 1e2 * dv.max(1e-9));
+        // one spacing, two where the neighbour ties within the node errors (centre 0)
+        assert!(dx <= pk.x_error && pk.x_error < 2.5 * h);
+    }
+    // rising to x = -1 like the edge singularity
+    let edge = at(&|x: f64| 1.0 / (1.0 + x).sqrt());
+    let pk = exact_run::node_peak(&edge, &err, &nodes, h);
+    assert_eq!(
+        (pk.x, pk.error, pk.x_error),
+        (nodes[0], f64::INFINITY, 0.5 * h)
+    );
+    // zero at every node: exactly (no error), and within an error (anywhere)
+    let zero = vec![0.0; nodes.len()];
+    let pk = exact_run::node_peak(&zero, &vec![0.0; nodes.len()], &nodes, h);
+    assert!(pk.x.is_nan() && pk.value == 0.0 && pk.error == 0.0 && pk.x_error == 0.0);
+    let pk = exact_run::node_peak(&zero, &err, &nodes, h);
+    assert!(pk.x.is_nan() && pk.error == 1e-9 && pk.x_error == 2.0);
+}
