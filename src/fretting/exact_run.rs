@@ -38,8 +38,8 @@ fn offsets(n: usize) -> Vec<(f64, f64)> {
 /// One state of the run: its point on the path (profiles at the nodes), H[q] at the nodes
 /// (for sigma_xx), the dissipation and its estimate since the normal load (pi B P^2), the
 /// estimates of its tractions (norm (T1), COUPLED's normal load's added) and of its D (pi B
-/// P; absolute, and since the cycle's start), and -int q_mid ds over the step that reached
-/// it (pi B P^2, [`ExactPath::step_mid_work`]).
+/// P; absolute, and since the cycle's start), and in a cycle -int q_mid ds over the step
+/// that reached it (pi B P^2, [`ExactPath::step_mid_work`]; 0 elsewhere).
 #[derive(Clone)]
 struct Step {
     point: PathPoint,
@@ -164,6 +164,10 @@ fn advance(
     let mut st = step(path, at, unit);
     let factor = surface_factor(&path.k);
     let both = st.traction_error + data.traction_error;
+    if slip.is_some() {
+        // a cycle's step: its mid-step work enters the cycle's loop work and energy
+        st.mid_work = path.step_mid_work(&prev);
+    }
     if let Some(s) = slip {
         for (j, ds) in path.step_slip(&prev, at).into_iter().enumerate() {
             s.value[j] += ds;
@@ -188,7 +192,6 @@ fn advance(
         ),
         Branch::Stuck { .. } => (data.punch_error, data.cycle_punch_error),
     };
-    st.mid_work = path.step_mid_work(&prev);
     Ok(st)
 }
 
@@ -240,10 +243,11 @@ const PEAK_RISE: f64 = 2.0;
 /// lies at a node whose value could exceed the peak's within them; there the profile's
 /// largest value along the contact lies within one node spacing when the profile is
 /// unimodal around it, above the node's by at most [`PEAK_RISE`] times the rise of the
-/// parabola through the node and its neighbours. At a node next to a contact edge it grows without bound towards the
-/// edge (tau_max follows p's edge singularity, the slip amplitude stays finite): error
-/// +infinity, the position the edge's, half a node spacing away. A profile that vanishes
-/// at every node: error the largest of `err`, position anywhere (2) unless that is 0.
+/// parabola through the node and its neighbours. At a node next to a contact edge the
+/// profile grows without bound towards the edge (tau_max follows p's edge singularity, the
+/// slip amplitude stays finite): error +infinity, the position the edge's, half a node
+/// spacing away. A profile that vanishes at every node: error the largest of `err`, position
+/// anywhere (2) unless that is 0.
 pub(super) fn node_peak(f: &[f64], err: &[f64], nodes: &[f64], h: f64) -> Peak {
     let (value, x) = peak(f, nodes);
     let worst = err.iter().fold(0.0f64, |a, &b| a.max(b));
