@@ -17,7 +17,7 @@ use super::*;
 
 /// |L[f](x)| per unit of int |f| when |f| has the shape of the edge singularity,
 /// |f| = (int |f|) p0 with p0 = 1/(pi sqrt(1 - t^2)): (1/pi) int p0 |ln|x - t|| dt <= 2 ln 2 / pi
-/// for every x on the contact (docs/theory_tangential.md (T18c)). The estimates take the
+/// for every x on the contact (docs/theory_tangential.md (T18b)). The estimates take the
 /// tractions' error (an estimate in the norm (T1)) in that shape, which bounds neither its
 /// log potential nor its point values: a model, not a bound.
 const LOG_POTENTIAL: f64 = 2.0 * LN_2 / PI;
@@ -143,7 +143,7 @@ impl Slip {
 /// Moves the path to `q`, recording the state; `data` is the state the current branch
 /// started from (where the load last reversed; the normal load while loading). The step's
 /// slip at the nodes is added to `slip` when given. The estimates (docs/theory_tangential.md
-/// (T18c)): a branch's slip since its data at x is de(x) - de(z), z in the stick set, and its
+/// (T18b)): a branch's slip since its data at x is de(x) - de(z), z in the stick set, and its
 /// D - D_d is de at the stick set's middle, both (T16) with de = e - e_d, which the path
 /// sums over the branch's steps; an intermediate state's error enters at two points of its
 /// own stick set, where its e - e_d is constant to the solve's residual, and cancels. So the
@@ -210,7 +210,7 @@ fn loads(from: f64, to: f64, steps: usize) -> Vec<f64> {
 
 /// The part of the grid's elastic energy (1/2) int q u (docs/theory_tangential.md section
 /// 4) that is linear in q at bp = 0, (1/2) int q (-bq S[p0]) with S[p0](x) = arcsin(x)/pi,
-/// changed from `a` to `b` (units of pi B P^2; (T18b)): -(bq/(2 pi)) int (q_b - q_a) arcsin x
+/// changed from `a` to `b` (units of pi B P^2; (T18c)): -(bq/(2 pi)) int (q_b - q_a) arcsin x
 /// by the graded rule on both states' zone ends.
 fn linear_energy(k: &Coupling, a: &ExactPath, b: &ExactPath) -> f64 {
     let mut bps = a.breakpoints();
@@ -391,7 +391,7 @@ pub(super) fn solve(
             })
             .collect();
         // at bp = 0 each node's slip is monotone along a branch and the extremes lie at the
-        // turning points, which are steps (T18c): the estimate is the slips' own
+        // turning points, which are steps (T18b): the estimate is the slips' own
         let slip_error: Vec<f64> = slip.error.iter().map(|e| e * unit).collect();
         let mut tau_max: Vec<f64> = start.point.q.iter().map(|q| q.abs()).collect();
         let mut sxx_max = sxx(&start);
@@ -429,7 +429,7 @@ pub(super) fn solve(
             .sum();
         let mid_work: f64 = states.iter().map(|st| st.mid_work).sum();
         let w_cycle = end.dissipated - w0;
-        // the loop work's estimate (T18b): the trapezoidal rule's error W_mid - W, and D's
+        // the loop work's estimate (T18c): the trapezoidal rule's error W_mid - W, and D's
         // estimates since the cycle's start with the weights of sum Q_mid dD = sum c_k D_k
         let punch_part: f64 = {
             let mut errs = vec![0.0];

@@ -801,7 +801,7 @@ fn exact_cycle_estimates_against_tighter_tolerances_and_the_grid() {
     // sigma_xx is compressive at every node: F2 vanishes, within the estimates
     assert!(a.f2.iter().all(|&v| v == 0.0));
     assert_eq!((a.f2_peak.error, a.f2_peak.x_error), (0.0, 0.0));
-    // the elastic energy's change (T18b) moves with the tolerances by 1e-11 of it (measured
+    // the elastic energy's change (T18c) moves with the tolerances by 1e-11 of it (measured
     // 3.0e-14 P^2/E)
     assert!((a.energy_change - b.energy_change).abs() < 1e-10 * b.energy_change);
     // the shaken-down cycle: nothing slips, the state repeats
@@ -809,7 +809,7 @@ fn exact_cycle_estimates_against_tighter_tolerances_and_the_grid() {
     assert_eq!(c2.slip_amplitude_error, 0.0);
     assert!(c2.energy_change.abs() < 1e-15 && c2.loop_work.abs() < 1e-15);
     assert!(c2.balance_residual.is_nan() && a.balance_residual.is_nan());
-    // the loop work's trapezoidal error W_mid - W (T18b): the loop work less it does not
+    // the loop work's trapezoidal error W_mid - W (T18c): the loop work less it does not
     // depend on the load steps (the two runs' D to their estimates)
     let coarser = exact_run::solve(
         &c,
@@ -884,7 +884,7 @@ fn exact_cycle_estimates_against_tighter_tolerances_and_the_grid() {
     assert!((defect(1) + b.loop_work_error).abs() < 1e-3 * b.loop_work_error);
     // the energy change: the grid's (1/2) int q u converges slowly and not monotonically
     // (2.8202815e-3, 2.8202813e-3, 2.8202864e-3, 2.8202922e-3 P^2/E at n = 100 .. 800,
-    // docs/theory_tangential.md (T18b)), as its W does (section 17): 1e-5 at n = 200
+    // docs/theory_tangential.md (T18c)), as its W does (section 17): 1e-5 at n = 200
     let g = cycle(1).energy_change * unit;
     println!(
         "energy change: exact {:.10e}, grid n = 200 {g:.10e}",
@@ -918,7 +918,7 @@ fn exact_cycle_estimates_against_tighter_tolerances_and_the_grid() {
 }
 
 /// Slow tier (45 s: the grid at n = 800 alone 38 s, n = 400 5.5 s): the exact run's loop work, its
-/// trapezoidal error W_mid - W and the energy change (T18b) against the grid at n = 400 and
+/// trapezoidal error W_mid - W and the energy change (T18c) against the grid at n = 400 and
 /// 800 with the same load steps, extrapolated to order 1 (error SAFETY times the two runs'
 /// difference); at n = 100 and 200 (the fast test) the grid's energy change has not yet
 /// reached its first-order regime.

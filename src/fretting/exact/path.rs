@@ -363,7 +363,7 @@ impl ExactPath {
 
     /// -int q_mid ds over the load step from `prev` to this state (units of pi B P^2), the
     /// work of the mid-step traction on the step's slip (docs/theory_tangential.md (T9) and
-    /// (T18b)): per slip zone by parts as [`Self::step_dissipation`], with q_mid = (q_prev +
+    /// (T18c)): per slip zone by parts as [`Self::step_dissipation`], with q_mid = (q_prev +
     /// q)/2 in place of mu p_mid (int_Z r ds = -int dslope R, R = int r from the contact's
     /// end). Zero for the normal load and full stick.
     pub(crate) fn step_mid_work(&self, prev: &ExactPath) -> f64 {
