@@ -215,9 +215,17 @@ pub struct Peak {
     pub value: f64,
     /// Where (a node; NaN when the profile vanishes everywhere).
     pub x: f64,
-    /// Error estimate of the value.
+    /// Error estimate of the value. The grid: against its check runs. Exact: the largest
+    /// estimate of the node values (docs/theory_tangential.md (T18d)), plus at an interior
+    /// node twice the rise of the parabola through it and its neighbours; +infinity at a node next
+    /// to a contact edge, towards which the profile grows without bound (tau_max follows the
+    /// pressure's edge singularity, the slip amplitude stays finite).
     pub error: f64,
-    /// Error estimate of the position (0 when both runs find no peak).
+    /// Error estimate of the position (0 when both runs find no peak). Exact: one node
+    /// spacing plus the distance to any node that could hold the peak within the estimates
+    /// (the largest value lies between the peak node's neighbours where the profile is
+    /// unimodal); half a node spacing at a node next to an edge (the edge itself); 0 when
+    /// no node could hold a peak, 2 (anywhere) when none does but one could.
     pub x_error: f64,
 }
 
@@ -230,23 +238,35 @@ pub struct CycleResult {
     /// Half the peak-to-peak relative tangential displacement of solid and punch over the
     /// cycle, per node (units of P/E).
     pub slip_amplitude: Vec<f64>,
-    /// Error estimate of the slip amplitude: the largest over the nodes.
+    /// Error estimate of the slip amplitude: the largest over the nodes. The grid: against
+    /// its check runs. Exact: from the tractions' estimates of the cycle's states and of the
+    /// branches' data (docs/theory_tangential.md (T18b); no load-step error at bp = 0, where
+    /// each node's slip is monotone along a branch).
     pub slip_amplitude_error: f64,
     /// The loop: (Q/P, U) at the cycle's start and after each step (U in P/E).
     pub loop_points: Vec<(f64, f64)>,
     /// Error estimate of the loop's displacements, the larger at its turning points -Q* and
-    /// +Q* (P/E; the intermediate points lie at different loads in the check runs).
+    /// +Q* (P/E; the intermediate points lie at different loads in the grid's check runs;
+    /// exact: D's estimate from the tractions' (T18b)).
     pub loop_error: f64,
     /// Work of Q over the cycle, the loop's area by the trapezoidal rule (P^2/E).
     pub loop_work: f64,
-    /// Error estimate of `loop_work`.
+    /// Error estimate of `loop_work` against the loop's area. Exact: the trapezoidal rule's
+    /// error, computed (sum over the steps of W_mid - W, docs/theory_tangential.md (T18c)),
+    /// plus the loop's D estimates.
     pub loop_work_error: f64,
     /// Work of P over the cycle, P (V_end - V_start) (P^2/E; p changes with Q when bp > 0).
     pub normal_work: f64,
-    /// Change of the elastic energy over the cycle (P^2/E).
+    /// Change of the elastic energy (1/2)(P V + int q u) over the cycle (P^2/E; zero for a
+    /// cycle that ends in its start state). Exact (bp = 0): `loop_work` less the mid-step
+    /// dissipation, plus the change of the part of the energy linear in q
+    /// (docs/theory_tangential.md (T18c)).
     pub energy_change: f64,
     /// loop_work + normal_work - (mid-step dissipation + energy_change), (T9) summed:
-    /// rounding (NaN when bp = 0, where the operator is not symmetric).
+    /// rounding. NaN when bp = 0, where the operator is not symmetric: (T9) holds there for
+    /// the energy of q alone, -(1/2) int q L[q], and the energy above adds (1/2) int q u_p
+    /// with u_p = -pi B P bq S[p0] fixed, linear in q, which no work changes, so the residual
+    /// would be its change, not rounding (docs/theory_tangential.md (T18c)).
     pub balance_residual: f64,
     /// tau_max: the largest |q| at each node over the cycle (P/a).
     pub tau_max: Vec<f64>,

@@ -338,18 +338,63 @@ impl ExactPath {
     /// the zone, as admissibility asks). The estimate: twice mu times the step's largest
     /// slip (at the zone's contact end) times this state's traction estimate.
     fn step_dissipation(&self, prev: &ExactPath) -> (f64, f64) {
-        // the normal load, and full stick: no slip zone
-        if matches!(self.branch, Branch::Normal | Branch::Stuck { .. }) {
-            return (0.0, 0.0);
-        }
         let k = self.k;
         let g = edge_exponent(&k);
-        let (c1, c2) = self.stick_set();
         let te = self.estimates().1;
+        let (mut w, mut err) = (0.0, 0.0);
+        self.over_slip_zones(prev, &mut |cuts, at, f| {
+            let m = |o: f64| {
+                let (opx, omx) = at(o);
+                let (pa, _) = prev.tractions(opx, omx);
+                let (pb, _) = self.tractions(opx, omx);
+                0.5 * k.mu * (pa + pb)
+            };
+            w += by_parts(g, cuts, &m, f).abs();
+            // the slip at the contact's end, int_0^width f
+            let edge: f64 = cuts
+                .windows(2)
+                .flat_map(|c| crate::numerics::quadrature::graded_rule(c[0], c[1], 0.1, 1e-15, 16))
+                .map(|(o, wt)| wt * f(o))
+                .sum();
+            err += 2.0 * k.mu * edge.abs() * te;
+        });
+        (w, err)
+    }
+
+    /// -int q_mid ds over the load step from `prev` to this state (units of pi B P^2), the
+    /// work of the mid-step traction on the step's slip (docs/theory_tangential.md (T9) and
+    /// (T18c)): per slip zone by parts as [`Self::step_dissipation`], with q_mid = (q_prev +
+    /// q)/2 in place of mu p_mid (int_Z r ds = -int dslope R, R = int r from the contact's
+    /// end). Zero for the normal load and full stick.
+    pub(crate) fn step_mid_work(&self, prev: &ExactPath) -> f64 {
+        let g = edge_exponent(&self.k);
+        let mut total = 0.0;
+        self.over_slip_zones(prev, &mut |cuts, at, f| {
+            let r = |o: f64| {
+                let (opx, omx) = at(o);
+                let (_, qa) = prev.tractions(opx, omx);
+                let (_, qb) = self.tractions(opx, omx);
+                0.5 * (qa + qb)
+            };
+            total -= by_parts(g, cuts, &r, f);
+        });
+        total
+    }
+
+    /// Calls `each(cuts, at, f)` per slip zone of this state after the step from `prev`: the
+    /// zone as offsets o from its contact end (the zone at -1 in 1 + x, the one at +1 in
+    /// 1 - x), `cuts` from 0 to the zone's width with both states' zone ends between, `at`
+    /// the point (1 + x, 1 - x) of an offset, and `f` = d(ds)/do, the step's slip slope
+    /// dslope = -(bq (p - p_prev) + H[q] - H[q_prev]) oriented along o (ds = 0 at the stick
+    /// end, o = width). None for the normal load and full stick.
+    fn over_slip_zones(&self, prev: &ExactPath, each: &mut ZoneVisit) {
+        if matches!(self.branch, Branch::Normal | Branch::Stuck { .. }) {
+            return;
+        }
+        let k = self.k;
+        let (c1, c2) = self.stick_set();
         let mut bps = self.breakpoints();
         bps.extend(prev.breakpoints());
-        let (mut w, mut err) = (0.0, 0.0);
-        // the zone at -1 (o = 1 + x) and the zone at +1 (o = 1 - x)
         for (left, width) in [(true, 1.0 + c1), (false, 1.0 - c2)] {
             if width <= 0.0 {
                 continue;
@@ -363,13 +408,6 @@ impl ExactPath {
             cuts.extend([0.0, width]);
             cuts.sort_by(f64::total_cmp);
             cuts.dedup();
-            let m = |o: f64| {
-                let (opx, omx) = at(o);
-                let (pa, _) = prev.tractions(opx, omx);
-                let (pb, _) = self.tractions(opx, omx);
-                0.5 * k.mu * (pa + pb)
-            };
-            // d(ds)/do: dslope at the left zone, -dslope at the right one
             let f = |o: f64| {
                 let (opx, omx) = at(o);
                 let (pa, ha) = prev.pressure_and_hq(opx, omx);
@@ -382,16 +420,8 @@ impl ExactPath {
                 }
                 if left { dslope } else { -dslope }
             };
-            w += by_parts(g, &cuts, &m, &f).abs();
-            // the slip at the contact's end, int_0^width f
-            let edge: f64 = cuts
-                .windows(2)
-                .flat_map(|c| crate::numerics::quadrature::graded_rule(c[0], c[1], 0.1, 1e-15, 16))
-                .map(|(o, wt)| wt * f(o))
-                .sum();
-            err += 2.0 * k.mu * edge.abs() * te;
+            each(&cuts, &at, &f);
         }
-        (w, err)
     }
 
     /// The slip of the solid relative to the punch over the load step from `prev` to this
@@ -479,7 +509,7 @@ impl ExactPath {
     }
 
     /// The normal-load state of this path.
-    fn normal_path(&self) -> ExactPath {
+    pub(crate) fn normal_path(&self) -> ExactPath {
         ExactPath {
             branch: Branch::Normal,
             punch: 0.0,
@@ -647,8 +677,12 @@ impl ExactPath {
 /// evaluation each, against the 9,000 of one (T16).
 const STUCK_CHECKS: usize = 400;
 
+/// What [`ExactPath::over_slip_zones`] calls per slip zone: (cuts, offset -> (1 + x, 1 - x),
+/// the slip slope along the offset).
+type ZoneVisit<'a> = dyn FnMut(&[f64], &dyn Fn(f64) -> (f64, f64), &dyn Fn(f64) -> f64) + 'a;
+
 /// Offset from a contact end (in units of a) inside which a non-finite slip slope counts as
-/// zero in [`ExactPath::step_dissipation`].
+/// zero in [`ExactPath::step_dissipation`] and [`ExactPath::step_mid_work`].
 const NEAR_END: f64 = 1e-14;
 
 /// A load-path state as a [`Profile`]: its tractions in the contact's frame at any x.
