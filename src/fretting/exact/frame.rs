@@ -209,14 +209,20 @@ impl Frame {
     }
 
     /// The point at x (given with 1 + x and 1 - x), strictly inside a zone.
+    ///
+    /// The zone and both offsets in it are read from the offset with the more digits, 1 + x
+    /// on the left half and 1 - x on the right: the two may disagree by their rounding (a
+    /// caller's 2 - (1 + x) has lost digits of 1 + x), and an offset from a zone end taken
+    /// from the other one can round to zero, where the zones' H[q] is NaN, for a point that
+    /// the first one places inside the zone.
     pub(crate) fn locate(&self, opx: f64, omx: f64) -> Loc {
-        // the zone by the offset with the more digits: 1 + x < z.opl + z.len is
-        // 1 - x > z.omh, and 2 - (1 - x) near x = 1 has lost them
+        // 1 + x < z.opl + z.len is 1 - x > z.omh
+        let left = opx <= omx;
         let i = self
             .zones
             .iter()
             .position(|z| {
-                if opx <= omx {
+                if left {
                     opx < z.opl + z.len
                 } else {
                     omx > z.omh
@@ -224,7 +230,7 @@ impl Frame {
             })
             .unwrap_or(self.zones.len() - 1);
         let z = &self.zones[i];
-        let (from_lo, to_hi) = if z.opl <= z.omh {
+        let (from_lo, to_hi) = if left {
             (opx - z.opl, z.len - (opx - z.opl))
         } else {
             (z.len - (omx - z.omh), omx - z.omh)

@@ -618,3 +618,80 @@ fn goodman_slip_matches_t16() {
         }
     }
 }
+
+/// bp = 0 with the contact's tolerances at 1e-12, the exact run's unloading step from
+/// -0.9 Q* to -0.95 Q* (20 steps per quarter cycle, Q* = 0.18 P): the loaded state's stick
+/// end c2* lies 9.7e-6 inside the new leading zone (-1, a1), a cut of the slip's graded
+/// rule, whose node next to it rounds to 1 + x = 1 + c2* + 1 ulp, where 2 - (1 + x) rounds
+/// onto 1 - c2*. The loaded frame places that point past c2* by 1 + x and must measure its
+/// offset by 1 + x too (`Frame::locate`): measured by 1 - x it was 0, the loaded forcing
+/// NaN there and the step refused ("slip NaN at 1 + x = 0.661"). The step's state: its
+/// forcing finite at that point, every check slip positive, the slip since Q* next to c2*
+/// on both sides, near a1 and at the corner, and the step's slip ((T18a), `step_slip`) at
+/// the run's nodes of n = 100 in the leading zone, each equal to (T16)'s
+/// e - e_ref - (D - D_ref) (`surface_change`, a quadrature of L[q]).
+#[test]
+fn goodman_slip_next_to_the_loaded_stick_end_is_a_number() {
+    let k = goodman();
+    let q_star = 0.18;
+    let mut loaded = ExactPath::new(&k, 1e-12, 1e-12).unwrap();
+    loaded.load(q_star).unwrap();
+    let (_, c2) = loaded.stick_set();
+    let mut before = loaded.clone();
+    // the run's loads: Q* + (-2 Q*) i / 40 for i = 38, 39
+    before.load(q_star - 2.0 * q_star * 38.0 / 40.0).unwrap();
+    let mut path = before.clone();
+    path.load(q_star - 2.0 * q_star * 39.0 / 40.0).unwrap();
+    let Branch::Unloading { u, .. } = &path.branch else {
+        panic!("not unloading")
+    };
+    let (a1, _) = path.stick_set();
+    println!("a1 - c2* = {:e}", a1 - c2);
+    assert!(a1 > c2 && a1 - c2 < 1e-5);
+    // the point next to c2* as the graded rule gives it
+    let opx = (1.0 + c2).next_up();
+    let omx = 2.0 - opx;
+    assert_eq!(omx, 1.0 - c2);
+    assert!(u.loaded.forcing(opx, omx).is_finite());
+    let (leading, _) = u.zone_slips();
+    assert!(leading.iter().all(|&(_, s)| s > 0.0), "{leading:?}");
+    // (T16) differences e - e* of size 1e-2: rounding 1e-17 .. 1e-15 absolute
+    for x in [
+        -0.9975,
+        0.9 * (1.0 + a1) - 1.0,
+        c2 - 1e-6,
+        c2 + 1e-6,
+        a1 - 1e-7,
+    ] {
+        let s = u.slip(1.0 + x, 1.0 - x);
+        let t16 = path.surface_change(&loaded, x) - (path.punch - loaded.punch);
+        println!("x = {x:.9}: slip since Q* {s:.12e}, (T16) {t16:.12e}");
+        assert!(s > 0.0 && (s - t16).abs() < 1e-13, "{s:e} {t16:e}");
+    }
+    let n = 100;
+    let nodes: Vec<(f64, f64)> = (0..n)
+        .map(|i| {
+            (
+                (i as f64 + 0.5) / n as f64,
+                2.0 - (i as f64 + 0.5) / n as f64,
+            )
+        })
+        .filter(|&(o, _)| o < 1.0 + a1)
+        .collect();
+    let steps = path.step_slip(&before, &nodes);
+    let worst = nodes
+        .iter()
+        .zip(&steps)
+        .map(|(&(o, _), &step)| {
+            let t16 = path.surface_change(&before, o - 1.0) - (path.punch - before.punch);
+            assert!(step > 0.0, "{step:e} at 1 + x = {o}");
+            (step - t16).abs()
+        })
+        .fold(0.0, f64::max);
+    println!(
+        "the step's slip at {} nodes: (T16) to {worst:e} (largest {:e})",
+        nodes.len(),
+        steps[0]
+    );
+    assert!(worst < 1e-13);
+}
