@@ -323,6 +323,9 @@ pub(crate) fn from_guess(
 /// (b* = 0.25, c = 4.2e-5) slope / b* was 0.029. The bound is 0.0125, under half of that.
 const SLOPE_FLOOR: f64 = 0.0125;
 
+/// One band of [`SENSITIVITY_BOUNDS`]: (b* below, per lc (p, q~), per sigma (p, q~)).
+type SensitivityBand = (f64, (f64, f64), (f64, f64));
+
 /// Upper bounds, per band of b*, on the tractions' move per unit of lc,
 /// (int |dp|, int |dq~|) / dlc, and per unit of sigma at a fixed level's sizes,
 /// (int |dp|, int |dq~|) / |d sigma| = rate / |slope|, where the bases serve: (b* below, per
@@ -349,7 +352,7 @@ const SLOPE_FLOOR: f64 = 0.0125;
 /// (30, 70) per sigma, was near the largest only at b* >= 0.8; at b* = 0.33, c = 0.09 the
 /// move per lc measured 3.4e-3 against 4, so every speed scene at tractions to 1e-10 measured
 /// the slope and the move, one more solve.)
-const SENSITIVITY_BOUNDS: [(f64, (f64, f64), (f64, f64)); 11] = [
+const SENSITIVITY_BOUNDS: [SensitivityBand; 11] = [
     (0.1, (0.0025, 0.029), (0.35, 4.0)),
     (0.2, (0.015, 0.072), (0.85, 4.2)),
     (0.3, (0.038, 0.124), (1.4, 4.5)),
