@@ -366,13 +366,39 @@ const SENSITIVITY_BOUNDS: [SensitivityBand; 11] = [
     (f64::INFINITY, (4.92, 8.18), (27.4, 48.4)),
 ];
 
-/// The bounds of [`SENSITIVITY_BOUNDS`] at b*: (per lc, per sigma).
-fn sensitivity_bounds(b: f64) -> ((f64, f64), (f64, f64)) {
-    let &(_, by_lc, by_sigma) = SENSITIVITY_BOUNDS
+/// Upper bounds on the tractions' move per unit of c, (int |dp|, int |dq~|) / dc =
+/// rate / (c (1 - c)), where c < [`SMALL_C`]: the move per lc falls with c, while the
+/// table's uncertainty in lc, its bound on c over c (1 - c), grows as 1/c. Measured as for
+/// [`SENSITIVITY_BOUNDS`], the largest per band of c (b* = 0.02 .. 0.99):
+///
+/// | c | points | p | q~ |
+/// |---|---|---|---|
+/// | 4e-5 .. 3e-4 | 14 | 12.6 | 15.0 |
+/// | 3e-4 .. 1e-3 | 39 | 2.38 | 2.62 |
+/// | 1e-3 .. 3e-3 | 12 | 19.4 | 23.6 |
+/// | 3e-3 .. 0.01 | 49 | 26.3 | 34.6 |
+/// | 0.01 .. 0.03 | 31 | 41.5 | 63.3 |
+///
+/// The bounds are twice the largest below 0.01. (The carbon ply at mu = 0.1, c = 4.8e-5,
+/// measured 8e-3 per unit of c; with the bound per b* alone its tractions to 1e-10 measured
+/// the slope and the move, one more solve.)
+const RATE_PER_C: (f64, f64) = (55.0, 70.0);
+
+/// The stick zones below which [`RATE_PER_C`] bounds the move per lc too.
+const SMALL_C: f64 = 0.01;
+
+/// The bounds at b* and the stick edge c (1 - c = w): (per lc, per sigma), from
+/// [`SENSITIVITY_BOUNDS`] and, for c < [`SMALL_C`], [`RATE_PER_C`].
+fn sensitivity_bounds(b: f64, c: f64, w: f64) -> ((f64, f64), (f64, f64)) {
+    let &(_, (mut p, mut q), by_sigma) = SENSITIVITY_BOUNDS
         .iter()
         .find(|r| b < r.0)
         .unwrap_or(&SENSITIVITY_BOUNDS[SENSITIVITY_BOUNDS.len() - 1]);
-    (by_lc, by_sigma)
+    if c < SMALL_C {
+        p = p.min(RATE_PER_C.0 * c * w);
+        q = q.min(RATE_PER_C.1 * c * w);
+    }
+    ((p, q), by_sigma)
 }
 
 /// The starting lc with level 1 there (solved on first use) and, once measured, sigma's slope and the tractions' move per unit of lc.
@@ -521,7 +547,7 @@ fn at_fixed_edge(
         let shift = |s: Option<Sensitivity>, sigma: f64| {
             let (by_lc, by_sigma) = match s {
                 Some(s) => (s.rate, (s.rate.0 / s.slope.abs(), s.rate.1 / s.slope.abs())),
-                None => sensitivity_bounds(k.b),
+                None => sensitivity_bounds(k.b, c, w),
             };
             (
                 SAFETY * (by_lc.0 * uncertainty).min(by_sigma.0 * sigma),

@@ -170,7 +170,7 @@ fn newton_ladder_moves_to_the_root() {
 }
 
 /// The bounds that stand in for the measured slope and moves per lc and per sigma at a known
-/// stick edge ([`SLOPE_FLOOR`], [`SENSITIVITY_BOUNDS`], measured on a 53 x 53
+/// stick edge ([`SLOPE_FLOOR`], [`SENSITIVITY_BOUNDS`], [`RATE_PER_C`], measured on a 53 x 53
 /// grid) hold on another grid of the
 /// table's coordinates (37 x 37, none of its nodes on the first) and at the smallest stick
 /// zones served, measured as [`First::measured`] measures them.
@@ -216,7 +216,7 @@ fn sensitivity_bounds_hold() {
         let s = first.measured(k).expect("measured");
         served += 1;
         worst[0] = worst[0].max(SLOPE_FLOOR * b / s.slope.abs());
-        let (rate_bound, sigma_rate_bound) = sensitivity_bounds(b);
+        let (rate_bound, sigma_rate_bound) = sensitivity_bounds(b, e.c, e.one_minus_c);
         worst[1] = worst[1].max(s.rate.0 / rate_bound.0);
         worst[2] = worst[2].max(s.rate.1 / rate_bound.1);
         let per_sigma = (s.rate.0 / s.slope.abs(), s.rate.1 / s.slope.abs());
