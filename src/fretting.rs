@@ -406,14 +406,39 @@ fn run(
 }
 
 /// The surface stress sigma_xx(x, 0) = -delta^2 p - delta sqrt(2 (1 + kappa)) H[q]
-/// (docs/theory.md (F2)) at the midpoints of piecewise-constant p, q on 2n panels:
+/// (docs/theory.md (F2)) from p and H[q] at a point, in the contact's material.
+#[derive(Clone, Copy)]
+struct SurfaceSxx {
+    delta: f64,
+    root: f64,
+}
+
+impl SurfaceSxx {
+    fn new(contact: &Contact) -> Self {
+        let c = contact.material().constants();
+        Self {
+            delta: c.delta,
+            root: (2.0 * (1.0 + c.kappa)).sqrt(),
+        }
+    }
+
+    fn at(&self, p: f64, hq: f64) -> f64 {
+        -self.delta * self.delta * p - self.delta * self.root * hq
+    }
+
+    /// |d sigma_xx| per unit of |dp| and of |dH[q]| together: delta^2 + delta sqrt(2 (1 + kappa)).
+    fn weight(&self) -> f64 {
+        self.delta * self.delta + self.delta * self.root
+    }
+}
+
+/// [`SurfaceSxx`] at the midpoints of piecewise-constant p, q on 2n panels:
 /// H[q](x_i) = (1/pi) sum_j q_j ln|(x_i - a_j) / (x_i - b_j)| over the panels [a_j, b_j]
 /// (exact for piecewise-constant q; the panel's own term vanishes at its midpoint).
 struct SurfaceStress {
     m: usize,
     hilbert: Vec<f64>,
-    delta: f64,
-    root: f64,
+    sxx: SurfaceSxx,
 }
 
 impl SurfaceStress {
@@ -428,12 +453,10 @@ impl SurfaceStress {
                 }
             }
         }
-        let c = contact.material().constants();
         Self {
             m,
             hilbert,
-            delta: c.delta,
-            root: (2.0 * (1.0 + c.kappa)).sqrt(),
+            sxx: SurfaceSxx::new(contact),
         }
     }
 
@@ -442,7 +465,7 @@ impl SurfaceStress {
             .map(|i| {
                 let row = &self.hilbert[i * self.m..(i + 1) * self.m];
                 let hq: f64 = row.iter().zip(q).map(|(a, b)| a * b).sum();
-                -self.delta * self.delta * p[i] - self.delta * self.root * hq
+                self.sxx.at(p[i], hq)
             })
             .collect()
     }

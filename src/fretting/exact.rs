@@ -534,14 +534,16 @@ pub(crate) fn ladder<L: Rung>(
     Ok(Err(trace))
 }
 
+/// x from the offsets (1 + x, 1 - x), from the smaller one (the one with the digits).
+pub(crate) fn position(opx: f64, omx: f64) -> f64 {
+    if opx < omx { opx - 1.0 } else { 1.0 - omx }
+}
+
 /// int x p dx of a state, the moment the guided punch carries (per P a).
 pub(crate) fn moment(g: f64, s: &Solved) -> f64 {
     contact_rule(g, s, s)
         .into_iter()
-        .map(|(opx, omx, w)| {
-            let x = if opx < omx { opx - 1.0 } else { 1.0 - omx };
-            w * x * s.tractions(opx, omx).0
-        })
+        .map(|(opx, omx, w)| w * position(opx, omx) * s.tractions(opx, omx).0)
         .sum()
 }
 

@@ -12,7 +12,7 @@
 use std::f64::consts::LN_2;
 
 use super::exact::path::{Branch, ExactPath};
-use super::exact::{edge_exponent, rule_on};
+use super::exact::{edge_exponent, position, rule_on};
 use super::*;
 
 /// |L[f](x)| per unit of int |f| when |f| has the shape of the edge singularity,
@@ -75,7 +75,7 @@ fn step(path: &ExactPath, at: &[(f64, f64)], unit: f64) -> Step {
     for &(opx, omx) in at {
         let (pp, qq) = path.tractions(opx, omx);
         let (_, h) = path.pressure_and_hq(opx, omx);
-        let x = if opx < 1.0 { opx - 1.0 } else { 1.0 - omx };
+        let x = position(opx, omx);
         zones.push(if x >= c1 && x <= c2 {
             Zone::Stick
         } else if qq < 0.0 {
@@ -218,7 +218,7 @@ fn linear_energy(k: &Coupling, a: &ExactPath, b: &ExactPath) -> f64 {
     let sum: f64 = rule_on(edge_exponent(k), bps)
         .into_iter()
         .map(|(opx, omx, w)| {
-            let x = if opx < 1.0 { opx - 1.0 } else { 1.0 - omx };
+            let x = position(opx, omx);
             w * (b.tractions(opx, omx).1 - a.tractions(opx, omx).1) * x.asin()
         })
         .sum();
@@ -301,10 +301,7 @@ pub(super) fn solve(
     let tol = options.repeat_tolerance;
     let at = offsets(n);
     let h = 1.0 / n as f64;
-    let nodes: Vec<f64> = at
-        .iter()
-        .map(|&(o, m)| if o < 1.0 { o - 1.0 } else { 1.0 - m })
-        .collect();
+    let nodes: Vec<f64> = at.iter().map(|&(o, m)| position(o, m)).collect();
     let mut path = ExactPath::new(&k, contact.tolerance(), contact.traction_tolerance())
         .map_err(|e| in_run("the normal load", e))?;
     let normal = step(&path, &at, unit);
@@ -335,14 +332,13 @@ pub(super) fn solve(
     }
     let first_w = path.dissipated * unit;
     let first_err = path.dissipated_error * unit;
-    let c = contact.material().constants();
-    let root = (2.0 * (1.0 + c.kappa)).sqrt();
+    let surface = SurfaceSxx::new(contact);
     let sxx = |st: &Step| -> Vec<f64> {
         st.point
             .p
             .iter()
             .zip(&st.hq)
-            .map(|(p, hq)| -c.delta * c.delta * p - c.delta * root * hq)
+            .map(|(&p, &hq)| surface.at(p, hq))
             .collect()
     };
     // p0 at the nodes, from the offsets: the shape the point-wise estimates give the
@@ -416,7 +412,7 @@ pub(super) fn solve(
             .collect();
         let f2_error: Vec<f64> = (0..at.len())
             .map(|j| {
-                let e = (c.delta * c.delta + c.delta * root) * traction * p0[j];
+                let e = surface.weight() * traction * p0[j];
                 let d = if sxx_max[j] + e > 0.0 { e } else { 0.0 };
                 sxx_max[j].max(0.0) * f1_error[j] + (f1[j] + f1_error[j]) * d
             })
