@@ -60,6 +60,12 @@ fn traction_error(path: &ExactPath) -> f64 {
     path.estimates().1 + path.normal.traction_error
 }
 
+/// [`traction_error`] of the path's normal-load state, without building that state: its
+/// ladder's estimate is COUPLED's of the normal load, so twice that.
+fn normal_traction_error(path: &ExactPath) -> f64 {
+    2.0 * path.normal.traction_error
+}
+
 /// The estimate of |de(x)| per unit of a state's traction estimate: the log potential of q's
 /// error ([`LOG_POTENTIAL`]) and bq |S[dp]| <= (bq/2) int |dp|.
 fn surface_factor(k: &Coupling) -> f64 {
@@ -183,7 +189,7 @@ fn advance(
         Branch::Loading { .. } => {
             // D from the normal load; against the cycle's start, plus the start's estimate
             // (the data's estimate less its estimate since the cycle's start)
-            let e = factor * (st.traction_error + traction_error(&path.normal_path()));
+            let e = factor * (st.traction_error + normal_traction_error(path));
             (e, e + data.punch_error - data.cycle_punch_error)
         }
         Branch::Unloading { .. } => (

@@ -509,7 +509,7 @@ impl ExactPath {
     }
 
     /// The normal-load state of this path.
-    pub(crate) fn normal_path(&self) -> ExactPath {
+    fn normal_path(&self) -> ExactPath {
         ExactPath {
             branch: Branch::Normal,
             punch: 0.0,
