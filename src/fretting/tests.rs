@@ -556,8 +556,10 @@ fn exact_method_refusals_and_zones() {
     assert_eq!(z, Zone::Stick);
     let (p, q, z) = path.tractions_at(0.5 * (c2 + 1.0)).unwrap();
     assert!(z == Zone::SlipNegative && (q - 0.3 * p).abs() < 1e-12 * p);
+    // the edge zone is 1.2e-6 wide and p = 300 at its middle: q = -mu p holds there to the
+    // solve's rounding, 3e-12 of p (the loading starts from COUPLED's state at 1e-13)
     let (p, q, z) = path.tractions_at(-1.0 + 0.5 * (1.0 + c1)).unwrap();
-    assert!(z == Zone::SlipPositive && (q + 0.3 * p).abs() < 1e-12 * p);
+    assert!(z == Zone::SlipPositive && (q + 0.3 * p).abs() < 1e-11 * p);
     assert_eq!(path.tractions_at(1.0).unwrap().0, f64::INFINITY);
     assert!(path.tractions_at(1.5).is_err());
     let pt = path.point();

@@ -76,10 +76,17 @@ impl Sizes {
         Sizes {
             legendre: (3.0 + 2.0 * l).round() as usize,
             stick_g: (2.0 + 2.0 * l).round() as usize,
-            slip: [
-                (5.0 + 3.0 * l).round() as usize,
-                (3.0 + 2.0 * l).round() as usize,
-            ],
+            slip: {
+                let d = if l > 1.0 && !bonded {
+                    SLIP_DEGREES
+                } else {
+                    DENSE_SLIP_DEGREES
+                };
+                [
+                    (d[0] + 3.0 * l).round() as usize,
+                    (d[1] + 2.0 * l).round() as usize,
+                ]
+            },
             poles: [
                 (stick_decades
                     * if bonded {
@@ -99,6 +106,48 @@ impl Sizes {
         }
     }
 }
+
+/// The slip families' degrees above level 1 where the slip zone is not thin (no bonded
+/// columns, 1 - c >= [`BONDED_BELOW`]): 2 + 3 l for P^(-g,0) and 2 l for P^(-g,g) at level
+/// l. The slip zone's functions are smoother on their zone than the stick zone's on theirs
+/// (the nearest singularity not carried by a weight or a pole lies farther out in the
+/// zone's own variable), and the coarser columns' estimate is carried by the stick blocks: at level 1.5 on the 10 spectral speed scenes, at the tabulated c against
+/// level 5, three degrees fewer in either slip family left the true error where it was, one
+/// stick degree fewer raised it 2-30 times (docs/theory_spectral.md section 5). Measured on
+/// those scenes (`coupled::solve_to`, c to 1e-10; true: the traction distance to the panels
+/// at (1e-13, 1e-11); thread CPU time, the median over the scenes, the four offsets
+/// alternated in one run; level 1 at [`DENSE_SLIP_DEGREES`] in all four, steel at mu = 1,
+/// 1 - c = 2.1e-3, at the row's offsets):
+///
+/// | offsets | tractions 1e-8 | 1e-10 | largest true / estimate |
+/// |---|---|---|---|
+/// | (5, 3) | 0.229 ms | 0.493 ms | 0.18 |
+/// | (3, 1) | 0.206 ms | 0.454 ms | 0.52 |
+/// | (2, 0) (this rule) | 0.196 ms | 0.429 ms | 0.086 |
+/// | (0, 0) | 0.184 ms | 0.405 ms | 0.066 |
+///
+/// With (2, 0) every answer but steel's at mu = 1 comes at its level with 6 unknowns fewer;
+/// steel at mu = 1 took half a level more at 1e-10 (and with (0, 0) at 1e-8 too); with
+/// (-1, -1) the ply, steel and kappa = 0.4 at mu = 1 each took a level more at 1e-8. Thin
+/// slip zones, steel at mu = 1 among them, keep [`DENSE_SLIP_DEGREES`]; with that rule, against
+/// the dense sizes everywhere (the same scenes, alternated twice in one run): 0.243, 0.241 to
+/// 0.211, 0.210 ms at tractions to 1e-8, 0.551, 0.541 to 0.479, 0.470 ms at 1e-10.
+const SLIP_DEGREES: [f64; 2] = [2.0, 0.0];
+
+/// The slip families' offsets at level 1 and in thin slip zones (1 - c < [`BONDED_BELOW`]).
+/// Thin slip zones' answers are sensitive to rounding at the level of their estimates
+/// (docs/theory_spectral.md section 5), and there the leaner sizes moved one answer past its
+/// estimate: b* = 0.17, mu~ = 32.45 (1 - c = 1.4e-11) answered at level 5 (165 unknowns)
+/// 7.3e-9 from the panels against the sum of both estimates 3.4e-9, where the dense sizes
+/// answer at level 3 (149), 2.2e-9 from them
+/// (`coupled::tests::spectral_agrees_with_the_panels_below_the_table_edge_on_a_grid`).
+/// The ladder's first level measures sigma's slope and the tractions' move per lc for the
+/// levels above it, whose bounds (`SENSITIVITY_BOUNDS` in `spectral`) were measured with
+/// these sizes; with [`SLIP_DEGREES`] at level 1 too, the
+/// move per sigma measured there at b* = 0.262, mu~ = 11.2 rose to 1.51, past the band's bound
+/// of 1.4 (twice the largest measured, 0.69). It is also the level that answers alone at
+/// loose tolerances, where (2, 0) gained nothing (tractions to 1e-6: 0.226 against 0.226 ms).
+const DENSE_SLIP_DEGREES: [f64; 2] = [5.0, 3.0];
 
 /// Below this g the slip zone's second family is the difference quotient
 /// (1 - s)^-g ((1 + s)^g - 1) / g p_k (docs/theory_spectral.md, section 7) in place of
