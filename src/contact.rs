@@ -294,7 +294,7 @@ impl Solution {
     }
 
     /// Whether the tractions are symmetric (p even, q odd: the normal-load solutions of
-    /// [`Contact::solve`]); false for a load-path state ([`crate::LoadPath::solution`]),
+    /// [`Contact::solve`]); false for a load-path state ([`crate::fretting::LoadPath::solution`]),
     /// which has no single stick half-width c, no edge intensity common to both edges and no
     /// slip function of its tractions alone.
     pub fn is_symmetric(&self) -> bool {

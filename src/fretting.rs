@@ -264,8 +264,8 @@ pub struct CycleResult {
     pub energy_change: f64,
     /// loop_work + normal_work - (mid-step dissipation + energy_change), (T9) summed:
     /// rounding. NaN when bp = 0, where the operator is not symmetric: (T9) holds there for
-    /// the energy of q alone, -(1/2) int q L[q], and the energy above adds (1/2) int q u_p
-    /// with u_p = -pi B P bq S[p0] fixed, linear in q, which no work changes, so the residual
+    /// the energy of q alone, -(1/2) int q L\[q\], and the energy above adds (1/2) int q u_p
+    /// with u_p = -pi B P bq S\[p0\] fixed, linear in q, which no work changes, so the residual
     /// would be its change, not rounding (docs/theory_tangential.md (T18c)).
     pub balance_residual: f64,
     /// tau_max: the largest |q| at each node over the cycle (P/a).
@@ -1036,7 +1036,7 @@ impl LoadPath {
     /// [`Solution::error_estimate`], [`LoadPath::traction_error`] as
     /// [`Solution::traction_error_estimate`], and the stresses of the field of its tractions.
     /// - The grid (method [`Method::Lcp`]): its tractions on [-1, 1] as the normal-load LCP
-    ///   solution presents its grid ([`StateProfile`]); at Q = 0 its tractions and stresses
+    ///   solution presents its grid (`StateProfile`); at Q = 0 its tractions and stresses
     ///   are those of the normal-load LCP solution on the same grid (to rounding).
     /// - Exact (method [`Method::Coupled`], the same bases): the exact tractions at any x; the
     ///   field from them fitted on panels graded towards every zone end.

@@ -7,7 +7,7 @@
 //! - beta = artanh(b*) (the bonded field's index eps = beta / pi; b* -> 1 is beta -> inf, not
 //!   a singular endpoint);
 //! - zeta = ln(mu~ / mu_lo(b*)), where mu_lo is the friction at which the full-slip law
-//!   c ~ 4 (1 - b*^2)^(pi / (2 b* mu~)) ([`crate::coupled::full_slip`]) gives c = [`C_LO`].
+//!   c ~ 4 (1 - b*^2)^(pi / (2 b* mu~)) (`coupled::full_slip`) gives c = [`C_LO`].
 //!   Below zeta = 0 the stick zone is below C_LO (the full-slip regime answers c there).
 //!
 //! Covered: b* = 0.25 .. 0.99 from zeta = 0 up to mu~ = 4e6 at least; below, b* = 0.02 .. 0.25
