@@ -8,7 +8,8 @@
 //!   (E2), whose zero fixes c;
 //! - here: c from sigma(lc) = 0, lc = ln(c / (1 - c)), from the tabulated stick edge, at
 //!   successive levels of the bases' sizes until two levels agree on c and the tractions
-//!   within the tolerances (the rounding noise (R2) counted in) and the equations hold at the
+//!   within the tolerances (the rounding noise (R2) counted in, and in thin slip zones the
+//!   answering level's spread under its rows reordered, (S10)) and the equations hold at the
 //!   collocation points to the traction tolerance (R1). One solve per level: sigma's slope
 //!   comes from level 1 (at lc and lc + [`SLOPE_STEP`]), and each level's Newton step
 //!   -sigma / slope gives its root (S5).
@@ -26,7 +27,7 @@ mod tests;
 use crate::numerics::quadrature::gauss_legendre_rule;
 use crate::problem::StickEdge;
 pub(crate) use system::Constants;
-use system::{Fixed, Sizes, solve_fixed, solve_fixed_pair};
+use system::{Assembled, Fixed, Sizes, assemble, solve_fixed, solve_fixed_pair};
 
 /// Smallest edge exponent g the bases serve (large friction, g ~ 1/(pi b* mu~)). Measured on
 /// the grid of `coupled::tests::small_g_against_the_panels` (b* = 0.35 .. 0.99 in 8 rows, the
@@ -131,6 +132,41 @@ const STALLED_LEVELS: usize = 2;
 /// 1 - c below 1e-3, this one the only failure; the largest ratio of distance to estimate
 /// elsewhere was 0.30.
 const CONFIRM_BELOW: f64 = 1e-3;
+
+/// Slip zones thinner than this count their answering level's rounding spread in the
+/// estimates ([`rounding_spread`], docs/theory_spectral.md (S10)). Measured at (1e-10, 1e-8)
+/// without the check, at the answering level's c and sizes: the tractions' distance
+/// ([`crate::problem::traction_distance`]) of that level solved with its rows reversed, and
+/// the largest of four shuffles, from the rows as assembled, over the answer's estimate
+/// (one run; the last two rows answered at the table's edge as a pair of solutions,
+/// [`system::solve_fixed_pair`], and their frames are solved once):
+///
+/// | b*, mu~ | 1 - c | reversed | shuffles, largest |
+/// |---|---|---|---|
+/// | 0.02, 0.2 | 2.8e-13 | 0.79 | 0.88 |
+/// | 0.1, 1.5 | 3.7e-13 | 0.10 | 0.32 |
+/// | 0.15, 10 | 8.3e-13 | 0.65 | 1.07 |
+/// | 0.16, 400 | 1.7e-12 | 0.18 | 0.19 |
+/// | 0.12, 2 | 2.7e-12 | 0.13 | 0.48 |
+/// | 0.15, 4 | 1.2e-11 | 0.04 | 0.28 |
+/// | 0.19, 335 | 2.3e-10 | 0.18 | 0.18 |
+/// | 0.05, 0.4 | 3.4e-10 | 0.08 | 0.14 |
+/// | 0.2, 200 | 8.8e-10 | 0.25 | 0.25 |
+/// | 0.2, 50 | 1.0e-9 | 0.15 | 0.29 |
+/// | 0.2, 10 | 2.2e-9 | 0.05 | 0.19 |
+/// | 0.22, 580 | 8.4e-9 | 0.017 | 0.017 |
+/// | 0.2, 3.0949 | 3.8e-8 | 0.003 | 0.003 |
+/// | 0.05, 0.29515 | 1.2e-7 | 0.005 | 0.005 |
+/// | 0.33, 400 | 1.8e-5 | 0.04 | 0.06 |
+/// | 0.05, 0.1866; 0.08, 0.284 | 7.5e-5, 1.6e-4 | 0.002, 0.000 | 0.003, 0.001 |
+/// | 0.25, 100; 0.37, 380 | 1.4e-7, 9.5e-5 | 0.03, 0.06 | 0.05, 0.06 |
+/// | five mid-range scenes | 0.075 .. 0.96 | at most 0.05 | at most 0.10 |
+///
+/// Up to 1 - c = 2.2e-9 the spread reaches 0.14-1.07 of the estimate; from 8.4e-9 up at
+/// most 0.06, which the estimate holds many times over, so the check is not paid there.
+/// With the limit at 1e-8, b* = 0.22, mu~ = 580 at (1e-10, 1e-10) went to the panels (its
+/// estimate 9.4e-11 passed 1e-10 with the spread added) for a spread of 0.017.
+const ROUNDING_BELOW: f64 = 5e-9;
 
 /// Extra Newton solves per level of a thin slip zone's ladder (1 - c < [`CONFIRM_BELOW`]).
 const THIN_NEWTON: usize = 2;
@@ -649,7 +685,9 @@ fn late_start(k: Constants, w: f64) -> bool {
 /// - c: [`SAFETY`] (d(L, L-1) + c (1 - c) (|r_L - lc_L| + |r_(L-1) - lc_(L-1)|)), the roots'
 ///   distance and each level's own step, which bounds its Newton step's error;
 /// - tractions: [`SAFETY`] times their distance between the levels (each at its lc) plus
-///   their move over |r_L - lc_L|, since they are those at lc_L.
+///   their move over |r_L - lc_L|, since they are those at lc_L;
+/// - where 1 - c < [`ROUNDING_BELOW`], once a level meets both without it, [`SAFETY`] times
+///   its spread under rounding ([`rounding_spread`]) added to both.
 fn newton_ladder(
     k: Constants,
     first: &First,
@@ -669,7 +707,9 @@ fn newton_ladder(
     for level in FIRST_LEVEL + 1..=MAX_LEVEL {
         let edge = StickEdge::from_logit(lc);
         let (c, w) = (edge.c, edge.one_minus_c);
-        let mut cur = sigma_at(k, lc, Sizes::at(level, c, w))?.fixed;
+        // the rounding check's system is kept where it is due
+        let check = w < ROUNDING_BELOW;
+        let (mut cur, mut system) = solved_at(k, lc, Sizes::at(level, c, w), check)?;
         let mut step = -cur.sigma / slope;
         // a thin slip zone's tractions move by rate |step| with the level's own step: Newton
         // at this level while that exceeds the tolerance and the step still halves
@@ -678,14 +718,16 @@ fn newton_ladder(
                 if SAFETY * (rate.0 + delta * rate.1) * step.abs() <= 0.5 * traction_tol {
                     break;
                 }
-                let Some(next) = sigma_at(k, lc + step, Sizes::at(level, c, w)) else {
+                let Some((next, next_system)) =
+                    solved_at(k, lc + step, Sizes::at(level, c, w), check)
+                else {
                     break;
                 };
-                let next_step = -next.fixed.sigma / slope;
+                let next_step = -next.sigma / slope;
                 if next_step.abs() > 0.5 * step.abs() {
                     break;
                 }
-                (lc, cur, step) = (lc + step, next.fixed, next_step);
+                (lc, cur, system, step) = (lc + step, next, next_system, next_step);
             }
         }
         let edge = StickEdge::from_logit(lc);
@@ -697,19 +739,37 @@ fn newton_ladder(
             }
         }
         let distance_c = StickEdge::from_logit(root).distance(StickEdge::from_logit(prev_root));
-        let error = SAFETY * (distance_c + c * w * (step.abs() + prev_step.abs()));
+        let mut error = SAFETY * (distance_c + c * w * (step.abs() + prev_step.abs()));
         let compared = if w < CONFIRM_BELOW {
             graded_distance(&cur, &prev)
         } else {
             distance(&cur, &prev)
         };
         let (dp, dq) = compared.parts;
-        let parts = (
+        let mut parts = (
             SAFETY * (dp + rate.0 * step.abs()),
             SAFETY * (dq + rate.1 * step.abs()),
         );
-        if error <= tol && parts.0 + delta * parts.1 <= traction_tol && cur.residual <= traction_tol
+        let meets = |error: f64, parts: (f64, f64)| {
+            error <= tol
+                && parts.0 + delta * parts.1 <= traction_tol
+                && cur.residual <= traction_tol
+        };
+        if meets(error, parts)
+            && let Some(system) = &system
         {
+            // the level's rounding spread, counted once the level meets its estimates (a
+            // failed second solve: no answer at this level)
+            match rounding_spread(system, &cur, slope, rate) {
+                Some(spread) => {
+                    error += SAFETY * c * w * spread.dlc;
+                    parts.0 += SAFETY * spread.parts.0;
+                    parts.1 += SAFETY * spread.parts.1;
+                }
+                None => error = f64::INFINITY,
+            }
+        }
+        if meets(error, parts) {
             match verdict(compared.noise, k.mu, traction_tol, delta, parts) {
                 Verdict::Answer(parts) => {
                     let answer = Spectral {
@@ -742,6 +802,55 @@ fn newton_ladder(
         lc = root;
     }
     None
+}
+
+/// The fixed-c system at lc for `sizes`, solved, as [`sigma_at`] does, with the assembled
+/// system kept where `keep` (for [`rounding_spread`]).
+fn solved_at(
+    k: Constants,
+    lc: f64,
+    sizes: Sizes,
+    keep: bool,
+) -> Option<(Fixed, Option<Assembled>)> {
+    let e = StickEdge::from_logit(lc);
+    let system = assemble(k, e.c, e.one_minus_c, sizes);
+    let fixed = system.solve().ok()?;
+    fixed.sigma.is_finite().then_some(())?;
+    Some((fixed, keep.then_some(system)))
+}
+
+/// A level's spread under rounding ([`rounding_spread`]).
+struct Spread {
+    /// Its root's spread in lc, |d sigma| / |slope|.
+    dlc: f64,
+    /// Its tractions' spread, (int |dp|, int |dq~|): at the level's lc, plus their move per
+    /// lc over `dlc`.
+    parts: (f64, f64),
+}
+
+/// The rounding check of a thin slip zone's level (docs/theory_spectral.md, (S10)): the
+/// level's system `system` solved again with its rows in reverse order, whose answer differs
+/// from `cur` (the rows as assembled) only by rounding; its distance from `cur` (graded, as
+/// the thin slip zones' levels are compared), and sigma's difference carried to the root
+/// through the slope and to the tractions through their move per lc `rate`. None where
+/// the second solve fails.
+fn rounding_spread(
+    system: &Assembled,
+    cur: &Fixed,
+    slope: f64,
+    rate: (f64, f64),
+) -> Option<Spread> {
+    let order: Vec<usize> = (0..system.rows()).rev().collect();
+    let other = system.solve_rows(&order).ok()?;
+    if !other.sigma.is_finite() {
+        return None;
+    }
+    let dlc = (other.sigma - cur.sigma).abs() / slope.abs();
+    let (dp, dq) = graded_distance(&other, cur).parts;
+    Some(Spread {
+        dlc,
+        parts: (dp + rate.0 * dlc, dq + rate.1 * dlc),
+    })
 }
 
 /// What a level that meets its estimates answers.

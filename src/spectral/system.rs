@@ -227,6 +227,9 @@ pub(crate) struct Basis {
     pub(crate) c: f64,
     pub(crate) w: f64,
     pub(crate) k: Constants,
+    /// The sizes the bases were built with (for the tests to assemble a level again).
+    #[cfg(test)]
+    pub(crate) sizes: Sizes,
     /// Stick zone: p (even), q (odd Legendre), q ((1 - tau^2)^g P^(g,g), odd).
     stick: [Block; 3],
     /// Slip zone: (1 - s)^-g P^(-g,0), (1 - s)^-g (1 + s)^g P^(-g,g).
@@ -299,6 +302,8 @@ impl Basis {
             c,
             w,
             k,
+            #[cfg(test)]
+            sizes,
             stick,
             slip,
             bonded,
@@ -577,6 +582,13 @@ pub(crate) fn solve_fixed(k: Constants, c: f64, w: f64, sizes: Sizes) -> Result<
     Assembled::new(k, c, w, sizes).solve()
 }
 
+/// The fixed-c system at `sizes`, assembled, to be solved once as it stands
+/// ([`Assembled::solve`], what [`solve_fixed`] does) and again with its rows in another
+/// order ([`Assembled::solve_rows`]).
+pub(crate) fn assemble(k: Constants, c: f64, w: f64, sizes: Sizes) -> Assembled {
+    Assembled::new(k, c, w, sizes)
+}
+
 /// The fixed-c system at `sizes` and, from the same rows and the same factorisation, the
 /// system of a subset of its columns ([`Basis::coarse_columns`]): the coarser solution and
 /// the finer one, whose distance estimates the finer one's error.
@@ -591,7 +603,7 @@ pub(crate) fn solve_fixed_pair(
 
 /// The weighted collocation rows of the fixed-c system with their column scales, and the
 /// three constraints in the scaled columns.
-struct Assembled {
+pub(crate) struct Assembled {
     basis: Arc<Basis>,
     /// Row-major, `basis.len() + 1` columns (the last one sigma's), scaled.
     a: Vec<f64>,
@@ -706,7 +718,7 @@ impl Assembled {
     /// columns by design: cond 1e15 and more); Householder QR without pivoting spreads their
     /// rounding over every coefficient (the mid-range scenes of the tests lost c at 1e-8 that
     /// way), so the pivoted QR at once, here and in [`Assembled::solve_pair`].
-    fn solve(&self) -> Result<Fixed> {
+    pub(crate) fn solve(&self) -> Result<Fixed> {
         let cols = self.basis.len() + 1;
         let x = constrained_sized(
             &self.a,
@@ -716,6 +728,26 @@ impl Assembled {
             cols - 1,
         )
         .map_err(|e| self.failure(e))?;
+        Ok(self.fixed(x))
+    }
+
+    /// Number of collocation rows.
+    pub(crate) fn rows(&self) -> usize {
+        self.rows
+    }
+
+    /// [`Assembled::solve`] with the rows taken in the order `order` (a permutation of
+    /// 0..[`Assembled::rows`]): the same least-squares problem in exact arithmetic, in
+    /// another rounding of the QR (docs/theory_spectral.md section 5, (S10)). The residual
+    /// (R1) is taken on the rows as assembled.
+    pub(crate) fn solve_rows(&self, order: &[usize]) -> Result<Fixed> {
+        let cols = self.basis.len() + 1;
+        let mut a = Vec::with_capacity(self.a.len());
+        for &i in order {
+            a.extend_from_slice(&self.a[i * cols..(i + 1) * cols]);
+        }
+        let x = constrained_sized(&a, cols, &vec![0.0; self.rows], self.cons.clone(), cols - 1)
+            .map_err(|e| self.failure(e))?;
         Ok(self.fixed(x))
     }
 
