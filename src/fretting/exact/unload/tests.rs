@@ -743,31 +743,38 @@ fn corner_structure_against_the_grid() {
 }
 
 /// The corner structure's widths as the coupling falls (docs/theory_tangential.md section
-/// 19): b* = bp = bq from 0.9 down in steps of 0.02 (halved when a step fails), mu = 1,
-/// Q* = 0.3 P, Q = 0.9 Q*, level 3, each answer started from the one before with the ends
-/// scaled by the loaded edge zone's width w1* and e1/e2 by the phase law (e1/e2)^(eps/eps').
-/// An answer is taken when its last Newton step is below 2e-3 (relative; the level-3 noise
-/// stalls some near b* = 0.87 there). Prints the ends against w1* and the layer's phase
-/// eps ln(e2/e1); asserts that the
-/// continuation reaches b* = 0.8 with the border constants below 1e-4 (their size is printed).
+/// 19): b* = bp = bq, mu = 1, Q* = 0.3 P, Q = 0.9 Q*, level 3; from b* = 0.85 (the grid's
+/// start at N = 200) down in steps of 0.02 (halved when a step fails), each answer started
+/// from the one before with the ends scaled by the loaded edge zone's width w1* and e1/e2
+/// by the phase law (e1/e2)^(eps/eps'). (Between 0.86 and 0.88 the loaded state is refused
+/// at (1e-10, 1e-8) or the corner's border constants stall at 1e-5 .. 1e-4: skipped.) An
+/// answer is taken when its border constants are below 1e-6. Prints the ends against w1*
+/// and the layer's phase eps ln(e2/e1); asserts that the continuation reaches b* = 0.77.
 #[test]
 #[ignore]
 fn corner_widths_along_b_star() {
     let eps_of = |b: f64| b.atanh() / std::f64::consts::PI;
     let (q_star, qp) = (0.3, 0.27);
-    let mut b = 0.9;
-    let m = monotonic(&strong(), q_star, 1e-10, 1e-8).unwrap();
+    let mut b = 0.85;
+    let k0 = Coupling {
+        bp: b,
+        bq: b,
+        mu: 1.0,
+    };
+    let m = monotonic(&k0, q_star, 1e-10, 1e-8).unwrap();
     let mut w_prev = m.stick_set().0;
-    let mut x = corner::corner_level(
-        &m,
-        corner_start(&strong(), 200, q_star, qp),
-        qp,
-        3,
-        1e-10,
-        &mut None,
-    )
-    .unwrap()
-    .x;
+    let start = corner_start(&k0, 200, q_star, qp);
+    let l = corner::corner_level(&m, start, qp, 3, 1e-10, &mut None).unwrap();
+    let sigma = l.state.sigma.iter().fold(0.0f64, |a, s| a.max(s.abs()));
+    let mut x = l.x;
+    println!(
+        "b* = {b}, eps = {:.4}: w1* = {w_prev:.4e}, ends {x:?}, e1/e2 = {:.3e}, eps ln(e2/e1) = \
+         {:.4}, sigma {sigma:.1e}",
+        eps_of(b),
+        x[0] / x[1],
+        eps_of(b) * (x[1] / x[0]).ln()
+    );
+    assert!(sigma < 1e-6);
     let mut step = 0.02;
     let mut reached = b;
     while step > 2e-3 {
@@ -793,7 +800,7 @@ fn corner_widths_along_b_star() {
             x[3] * r,
         ];
         match corner::corner_level(&m, y0, qp, 3, 1e-10, &mut None) {
-            Ok(l) if l.step < 2e-3 => {
+            Ok(l) if l.state.sigma.iter().all(|s| s.abs() < 1e-6) => {
                 let y = l.x;
                 let sigma = l.state.sigma.iter().fold(0.0f64, |a, s| a.max(s.abs()));
                 println!(
@@ -814,12 +821,12 @@ fn corner_widths_along_b_star() {
                     l.step,
                     t.elapsed()
                 );
-                assert!(sigma < 1e-4);
                 (x, w_prev, b, reached) = (y, w1, bn, bn);
                 step = 0.02;
             }
             Ok(l) => {
                 println!("b* = {bn:.4}: stalled at a relative step {:.1e}", l.step);
+                let _ = l.state.sigma;
                 step *= 0.5;
             }
             Err(e) => {
@@ -828,5 +835,5 @@ fn corner_widths_along_b_star() {
             }
         }
     }
-    assert!(reached <= 0.8, "{reached}");
+    assert!(reached <= 0.77, "{reached}");
 }
