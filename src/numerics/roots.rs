@@ -87,8 +87,64 @@ pub(crate) fn brent(
 /// A 2 x 2 Jacobian, row i the derivatives of the i-th function.
 pub(crate) type Jacobian2 = [[f64; 2]; 2];
 
-/// The chord method for two functions of two unknowns, f(x) = 0, whose evaluation is a
-/// whole solve `solve(x)` giving a state S with f = `value(&S)`:
+/// The chord method for two functions of two unknowns: [`chord`] with N = 2.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn chord2<S>(
+    x0: [f64; 2],
+    h: [f64; 2],
+    tol: f64,
+    max_steps: usize,
+    jac: &mut Option<Jacobian2>,
+    solve: impl FnMut([f64; 2]) -> crate::error::Result<S>,
+    value: impl Fn(&S) -> [f64; 2],
+    advance: impl FnMut([f64; 2], [f64; 2]) -> crate::error::Result<([f64; 2], f64)>,
+) -> crate::error::Result<([f64; 2], S, f64)> {
+    chord(x0, h, tol, max_steps, jac, solve, value, advance)
+}
+
+/// The Newton step -J^-1 f: Cramer's rule for N = 2, Gaussian elimination with partial
+/// pivoting otherwise; None for a singular or non-finite J.
+fn newton_step<const N: usize>(j: &[[f64; N]; N], f: &[f64; N]) -> Option<[f64; N]> {
+    let mut dx = [0.0; N];
+    if N == 2 {
+        let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
+        if det == 0.0 || !det.is_finite() {
+            return None;
+        }
+        dx[0] = -(j[1][1] * f[0] - j[0][1] * f[1]) / det;
+        dx[1] = -(-j[1][0] * f[0] + j[0][0] * f[1]) / det;
+        return Some(dx);
+    }
+    let (mut a, mut b) = (*j, *f);
+    for c in 0..N {
+        let piv = (c..N).max_by(|&r, &s| a[r][c].abs().total_cmp(&a[s][c].abs()))?;
+        a.swap(c, piv);
+        b.swap(c, piv);
+        if a[c][c] == 0.0 || !a[c][c].is_finite() {
+            return None;
+        }
+        for r in c + 1..N {
+            let m = a[r][c] / a[c][c];
+            let pivot = a[c];
+            for (v, p) in a[r][c..].iter_mut().zip(&pivot[c..]) {
+                *v -= m * p;
+            }
+            b[r] -= m * b[c];
+        }
+    }
+    // J y = f by back substitution, then dx = -y
+    for c in (0..N).rev() {
+        let s: f64 = (c + 1..N).map(|k| a[c][k] * dx[k]).sum();
+        dx[c] = (b[c] - s) / a[c][c];
+    }
+    for v in &mut dx {
+        *v = -*v;
+    }
+    dx.iter().all(|v| v.is_finite()).then_some(dx)
+}
+
+/// The chord method for N functions of N unknowns, f(x) = 0, whose evaluation is a whole
+/// solve `solve(x)` giving a state S with f = `value(&S)`:
 /// - the Jacobian by forward differences with steps `h`, kept in `jac` across calls (a
 ///   family of like problems) and taken afresh when a step no longer halves the one before
 ///   (stale, or the functions' rounding reached: then the search stops once a fresh
@@ -100,16 +156,16 @@ pub(crate) type Jacobian2 = [[f64; 2]; 2];
 /// Returns the last x, its state and the last move's size. Errors: those of `solve` and
 /// `advance`, and `NoConvergence` for a singular or non-finite Jacobian.
 #[allow(clippy::too_many_arguments)]
-pub(crate) fn chord2<S>(
-    x0: [f64; 2],
-    h: [f64; 2],
+pub(crate) fn chord<S, const N: usize>(
+    x0: [f64; N],
+    h: [f64; N],
     tol: f64,
     max_steps: usize,
-    jac: &mut Option<Jacobian2>,
-    mut solve: impl FnMut([f64; 2]) -> crate::error::Result<S>,
-    value: impl Fn(&S) -> [f64; 2],
-    mut advance: impl FnMut([f64; 2], [f64; 2]) -> crate::error::Result<([f64; 2], f64)>,
-) -> crate::error::Result<([f64; 2], S, f64)> {
+    jac: &mut Option<[[f64; N]; N]>,
+    mut solve: impl FnMut([f64; N]) -> crate::error::Result<S>,
+    value: impl Fn(&S) -> [f64; N],
+    mut advance: impl FnMut([f64; N], [f64; N]) -> crate::error::Result<([f64; N], f64)>,
+) -> crate::error::Result<([f64; N], S, f64)> {
     let mut x = x0;
     let mut s = solve(x)?;
     let mut step = f64::INFINITY;
@@ -117,25 +173,24 @@ pub(crate) fn chord2<S>(
     for _ in 0..max_steps {
         let f = value(&s);
         if jac.is_none() {
-            let f0 = value(&solve([x[0] + h[0], x[1]])?);
-            let f1 = value(&solve([x[0], x[1] + h[1]])?);
-            *jac = Some([
-                [(f0[0] - f[0]) / h[0], (f1[0] - f[0]) / h[1]],
-                [(f0[1] - f[1]) / h[0], (f1[1] - f[1]) / h[1]],
-            ]);
+            let mut j = [[0.0; N]; N];
+            for c in 0..N {
+                let mut y = x;
+                y[c] += h[c];
+                let fc = value(&solve(y)?);
+                for r in 0..N {
+                    j[r][c] = (fc[r] - f[r]) / h[c];
+                }
+            }
+            *jac = Some(j);
             fresh = true;
         }
-        let j = jac.unwrap_or_default();
-        let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
-        if det == 0.0 || !det.is_finite() {
-            return Err(crate::error::Error::NoConvergence(
-                "chord method: singular Jacobian".to_string(),
-            ));
-        }
-        let dx = [
-            -(j[1][1] * f[0] - j[0][1] * f[1]) / det,
-            -(-j[1][0] * f[0] + j[0][0] * f[1]) / det,
-        ];
+        let dx = jac
+            .as_ref()
+            .and_then(|j| newton_step(j, &f))
+            .ok_or_else(|| {
+                crate::error::Error::NoConvergence("chord method: singular Jacobian".to_string())
+            })?;
         let (next, last) = advance(x, dx)?;
         x = next;
         s = solve(x)?;
@@ -178,6 +233,41 @@ mod tests {
         let g = |x: f64| (50.0 * x).exp() - 2.0;
         let x = brent(|x| Ok(g(x)), (-1.0, g(-1.0)), (1.0, g(1.0)), 0.0, 200).unwrap();
         assert!((x - 2f64.ln() / 50.0).abs() <= 1e-16);
+    }
+
+    /// The chord method in three unknowns finds the root of a coupled nonlinear system
+    /// (x = (1, 2, 3): x1 x2 = 6, x0^2 + x1 = 3, x0 + x2^2 = 10) to its tolerance, through
+    /// the pivoted elimination (the first equation does not depend on x0: the Jacobian's
+    /// first pivot is zero).
+    #[test]
+    fn chord_in_three_unknowns() {
+        let f = |x: [f64; 3]| {
+            Ok([
+                x[1] * x[2] - 6.0,
+                x[0] * x[0] + x[1] - 3.0,
+                x[0] + x[2] * x[2] - 10.0,
+            ])
+        };
+        let (x, _, step) = chord(
+            [1.1, 1.9, 3.05],
+            [1e-7; 3],
+            1e-13,
+            50,
+            &mut None,
+            f,
+            |v: &[f64; 3]| *v,
+            |x: [f64; 3], d: [f64; 3]| {
+                Ok((
+                    std::array::from_fn(|i| x[i] + d[i]),
+                    d.iter().fold(0.0f64, |a, v| a.max(v.abs())),
+                ))
+            },
+        )
+        .unwrap();
+        assert!(step <= 1e-13, "{step:e}");
+        for (v, e) in x.iter().zip([1.0, 2.0, 3.0]) {
+            assert!((v - e).abs() < 1e-12, "{x:?}");
+        }
     }
 
     #[test]

@@ -198,6 +198,65 @@ impl Frame {
         self.zones[i].len
     }
 
+    /// The stick set's components, maximal runs of stick zones: (first zone, last zone,
+    /// 1 + lo, 1 - hi).
+    pub(crate) fn stick_parts(&self) -> Vec<(usize, usize, f64, f64)> {
+        let mut out: Vec<(usize, usize, f64, f64)> = Vec::new();
+        for (i, z) in self.zones.iter().enumerate() {
+            if z.kind != Kind::Stick {
+                continue;
+            }
+            match out.last_mut() {
+                Some(last) if last.1 + 1 == i => {
+                    last.1 = i;
+                    last.3 = z.omh;
+                }
+                _ => out.push((i, i, z.opl, z.omh)),
+            }
+        }
+        out
+    }
+
+    /// The columns' int (H[q] + bq p) over the slip zones `from..to` (between two stick
+    /// components) and the same integral of the forcing `r`, whose singular points (as
+    /// 1 + x) are `kinks`: a composite Gauss-Legendre rule ([`gap_rule`]) on the pieces
+    /// between the zones' ends and the kinks (the columns' H[q] carries logarithms at the
+    /// zone ends, the solution |x - end|^g there, the forcing |x - kink|^g).
+    fn gap_row(
+        &self,
+        from: usize,
+        to: usize,
+        r: &dyn Fn(f64, f64) -> f64,
+        kinks: &[f64],
+    ) -> (Vec<f64>, f64) {
+        let n = self.n;
+        let (mut pv, mut qv, mut hp, mut hq) =
+            (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]);
+        let mut buf = vec![0.0; self.scratch];
+        let mut row = vec![0.0; n];
+        let mut rint = 0.0;
+        for zone in from..to {
+            let z = &self.zones[zone];
+            for (l, w) in gap_rule(z.len, z.opl, kinks) {
+                let l = Loc { zone, ..l };
+                let (opx, omx) = self.offsets(&l);
+                // a node that rounds onto a kink, where the data's H[q] is infinite, is left
+                // out (weight below 1e-14 of its piece; the integrand is integrable there)
+                let rv = r(opx, omx);
+                if !rv.is_finite() {
+                    continue;
+                }
+                self.values(&l, &mut pv, &mut qv, &mut buf);
+                self.hilbert(&l, &mut hp, &mut hq, &mut buf);
+                for j in 0..n {
+                    row[j] += w * (hq[j] + self.k.bq * pv[j]);
+                }
+                rint += w * rv;
+            }
+        }
+        (row, rint)
+    }
+
     pub(crate) fn is_stick(&self, i: usize) -> bool {
         self.zones[i].kind == Kind::Stick
     }
@@ -400,6 +459,70 @@ const POINTS_PER_COLUMN: f64 = 1.3;
 /// than it has unknowns.
 const CLUSTER_DENSITY: f64 = 1.5;
 
+/// The gap rule's panels: ratio 0.2 over 20 levels towards each end of every piece (down
+/// to 5e-15 of it), 20 points each: section 11's graded quadrature.
+const GAP_RATIO: f64 = 0.2;
+const GAP_LEVELS: i32 = 20;
+const GAP_POINTS: usize = 20;
+/// Towards a kink of the forcing, inside a zone, 12 levels (down to 2e-9 of the piece): the
+/// forcing is bounded there (|x - kink|^g), the columns smooth, so the panel next to the
+/// kink leaves an error of its length^(1 + g), 1e-13; deeper nodes would sit within a few
+/// ulps of the kink, where the data's H[q] is evaluated from rounded offsets.
+const GAP_LEVELS_KINK: i32 = 12;
+
+/// (point, weight) of a rule for int over a zone of length `len` starting at 1 + x = `opl`,
+/// cut at the `kinks` (as 1 + x) inside it: on each piece, panels graded towards both of
+/// its ends ([`GAP_RATIO`], [`GAP_LEVELS`]), [`GAP_POINTS`] Gauss-Legendre nodes each, every
+/// node's offsets taken from the piece's nearer end (the zone index of the points is 0).
+pub(crate) fn gap_rule(len: f64, opl: f64, kinks: &[f64]) -> Vec<(Loc, f64)> {
+    let mut ends = vec![0.0];
+    ends.extend(
+        kinks
+            .iter()
+            .map(|&c| c - opl)
+            .filter(|&d| d > 0.0 && d < len),
+    );
+    ends.push(len);
+    ends.sort_by(f64::total_cmp);
+    let (t, wt) = crate::numerics::quadrature::gauss_legendre(GAP_POINTS);
+    let mut out = Vec::new();
+    for piece in ends.windows(2) {
+        let (u, v) = (piece[0], piece[1]);
+        let plen = v - u;
+        // each half graded towards its end, as deep as that end needs, and its nodes taken
+        // by their offsets from that end
+        for (from_v, end) in [(false, u), (true, v)] {
+            let at_kink = if from_v { v < len } else { u > 0.0 };
+            let levels = if at_kink { GAP_LEVELS_KINK } else { GAP_LEVELS };
+            let cuts = crate::numerics::quadrature::graded_cuts(plen, GAP_RATIO, levels);
+            let half: Vec<f64> = cuts.into_iter().filter(|&c| c <= 0.5 * plen).collect();
+            for c in half.windows(2) {
+                let (m, h) = (0.5 * (c[0] + c[1]), 0.5 * (c[1] - c[0]));
+                for (&ti, &wi) in t.iter().zip(&wt) {
+                    let d = m + h * ti;
+                    let l = if from_v {
+                        Loc {
+                            zone: 0,
+                            from_lo: end - d,
+                            to_hi: (len - end) + d,
+                        }
+                    } else {
+                        Loc {
+                            zone: 0,
+                            from_lo: end + d,
+                            to_hi: (len - end) - d,
+                        }
+                    };
+                    if l.from_lo > 0.0 && l.to_hi > 0.0 {
+                        out.push((l, h * wi));
+                    }
+                }
+            }
+        }
+    }
+    out
+}
+
 /// A fixed-geometry solve.
 pub(crate) struct Solved {
     pub(crate) frame: Frame,
@@ -412,7 +535,7 @@ pub(crate) struct Solved {
 }
 
 /// Solves (A), (B) with `n_sigma` (1 or 2) border constants, the forcing `r` (a function of
-/// (1 + x, 1 - x)) and int q = `qp`.
+/// (1 + x, 1 - x)) and int q = `qp`, on a connected stick set.
 pub(crate) fn solve(
     k: Coupling,
     specs: &[ZoneSpec],
@@ -421,19 +544,31 @@ pub(crate) fn solve(
     qp: f64,
     r: &dyn Fn(f64, f64) -> f64,
 ) -> Result<Solved> {
+    solve_parts(k, specs, sizes, n_sigma, qp, r, &[])
+}
+
+/// [`solve`] on a stick set of one or more components (maximal runs of stick zones), with
+/// `n_sigma` border constants per component (in its own variable tau) and, for each slip
+/// zone between two components, the condition that both move with the punch: the slip
+/// since the data returns to zero across it, int (H[q] + bq p - r) = 0 over it
+/// (docs/theory_tangential.md (C2)); `kinks` are the forcing's singular points (as 1 + x),
+/// where that integral's rule is cut. The border constants come component by component.
+pub(crate) fn solve_parts(
+    k: Coupling,
+    specs: &[ZoneSpec],
+    sizes: Sizes,
+    n_sigma: usize,
+    qp: f64,
+    r: &dyn Fn(f64, f64) -> f64,
+    kinks: &[f64],
+) -> Result<Solved> {
     let frame = Frame::new(k, specs, sizes);
     let n = frame.len();
-    let cols = n + n_sigma;
+    // the stick set's components (maximal runs of stick zones), each [lo, hi] as offsets
+    // (1 + lo, 1 - hi), with its first and last zone
+    let parts = frame.stick_parts();
+    let cols = n + n_sigma * parts.len().max(1);
     let pts = frame.collocation(POINTS_PER_COLUMN, CLUSTER_DENSITY * sizes.per_decade);
-    // the stick set [lo, hi] as offsets (1 + lo, 1 - hi)
-    let stick = {
-        let first = (0..frame.zone_count()).find(|&i| frame.is_stick(i));
-        let last = (0..frame.zone_count()).rev().find(|&i| frame.is_stick(i));
-        match (first, last) {
-            (Some(a), Some(b)) => (frame.zones[a].opl, frame.zones[b].omh),
-            _ => (0.0, 0.0),
-        }
-    };
     let g = 0.5 - (k.bp * k.mu).atan() / std::f64::consts::PI;
     let mut rows: Vec<Vec<f64>> = Vec::new();
     let mut rhs = Vec::new();
@@ -455,10 +590,16 @@ pub(crate) fn solve(
             for j in 0..n {
                 row[j] = w * (hq[j] + k.bq * pv[j]);
             }
-            row[n] = -w;
+            let c = parts
+                .iter()
+                .position(|&(a, b, _, _)| l.zone >= a && l.zone <= b)
+                .unwrap_or(0);
+            let (_, _, lo, hi) = parts[c];
+            let at = n + n_sigma * c;
+            row[at] = -w;
             if n_sigma > 1 {
-                let tau = (opx - stick.0 - (omx - stick.1)) / (2.0 - stick.0 - stick.1);
-                row[n + 1] = -w * tau;
+                let tau = (opx - lo - (omx - hi)) / (2.0 - lo - hi);
+                row[at + 1] = -w * tau;
             }
             rows.push(row);
             rhs.push(w * r(opx, omx));
@@ -498,6 +639,11 @@ pub(crate) fn solve(
         frame.values(&b, &mut p1, &mut q1, &mut buf);
         cons.push(((0..n).map(|j| pv[j] - p1[j]).collect(), 0.0));
         cons.push(((0..n).map(|j| qv[j] - q1[j]).collect(), 0.0));
+    }
+    // two stick components move with the same punch: the slip since the data, whose slope
+    // is -(H[q] + bq p - r), returns to zero across the slip zone between them
+    for w in parts.windows(2) {
+        cons.push(frame.gap_row(w[0].1 + 1, w[1].0, r, kinks));
     }
     let cons: Vec<(Vec<f64>, f64)> = cons
         .into_iter()

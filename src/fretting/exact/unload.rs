@@ -21,8 +21,10 @@
 //! corner x = -1 inside the leading zone (b* = 0.9: 0.015, 0.010, 0.0088 wide at N =
 //! 200, 400, 800) that this three-zone pattern omits, and early in the branch the ply's
 //! corner has that structure on the scale of 1e-6; [`Unloading::admissible`] refuses an
-//! answer whose leading zone slips backwards there.
+//! answer whose leading zone slips backwards there. The five-zone pattern of that corner
+//! (section 19) is solved at fixed level by [`corner`], not yet routed here.
 
+pub(crate) mod corner;
 #[cfg(test)]
 pub(crate) mod tests;
 
