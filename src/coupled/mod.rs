@@ -24,7 +24,7 @@
 //! continuous in mu from small friction); a bracket wider than 1 is bisected, then Brent's
 //! method refines the root at order 4 (if a higher order loses it, the search is redone at
 //! that order). If that fails, the whole search is redone scanning at order 8. Where the
-//! near-bonded law ([`near_bonded`]) puts 1 - c below 1e-6, the root is instead sought inside
+//! near-bonded law (`near_bonded`) puts 1 - c below 1e-6, the root is instead sought inside
 //! the law's window of lc at order 8, then 11 (the low orders lose the defect's sign there). At
 //! large friction (g < 1e-3) the search runs at orders 11 and 13 instead. The solution is
 //! checked for p > 0 and for |q| <= mu p on the stick zone before it is returned; an
@@ -38,15 +38,15 @@
 //! panels elsewhere:
 //! - mu = 0: p = p0, q = 0; bp = 0: Goodman's closed form, which is then exact;
 //! - a stick zone below the tolerance: the full-slip limit with the law
-//!   c ~ 4 (1 - b*^2)^(pi / (2 b* mu~)) ([`full_slip`]);
+//!   c ~ 4 (1 - b*^2)^(pi / (2 b* mu~)) (`full_slip`);
 //! - slip zones below the tolerance (small b*): the bonded punch with the law
-//!   ln((1 - c) / 8) = -kappa arctan(mu~) / eps ([`near_bonded`]);
+//!   ln((1 - c) / 8) = -kappa arctan(mu~) / eps (`near_bonded`);
 //! - mu~ >= 1e7, beyond the panels' reach: the quadratic in 1/mu~ through the panels'
-//!   solutions at mu~ = 1e6, 2e6, 4e6 ([`large_friction`]); in thin slip zones (1 - c below
+//!   solutions at mu~ = 1e6, 2e6, 4e6 (`large_friction`); in thin slip zones (1 - c below
 //!   about 1e-15) from g < 1e-3 on, through lower frictions (b* = 0.1: 530, 1061, 2122);
 //! - b* within 1e-5 of 1 (the auxetic limit, ill-conditioned): c = K s^(1/k0) with K
 //!   extrapolated in s = 1 - b* from the panels at s = 1e-5 .. 8e-5, then the root search
-//!   in a window around it where it agrees, else the panels at that c ([`auxetic`]);
+//!   in a window around it where it agrees, else the panels at that c (`auxetic`);
 //! - c alone (traction tolerance +infinity, [`solve_to`]): the tabulated stick edge
 //!   ([`crate::stick_edge_table`]) where its bound meets the tolerance, with Goodman's
 //!   tractions and their model-error bound.
@@ -59,7 +59,7 @@
 //! limit takes over where its bound meets the tolerances (1 - c below 1.1e-21 at 1e-10), so
 //! the two leave no gap at tolerances from 1e-10 up; at large friction (g < 1e-3) thin slip
 //! zones (1 - c below about 1e-15) are extrapolated in 1/mu~ from the panels at lower
-//! friction ([`large_friction`]).
+//! friction (`large_friction`).
 //! A panel solve is 6-9 cheap order-4 solves, then about two Householder least-squares
 //! solves per order (100-350 unknowns at the last); `cargo run --release --example
 //! coupled_timing` measures the cost.
@@ -819,13 +819,13 @@ const CONDITIONING_NOTE_BELOW: f64 = 1e-3;
 /// Solves (E1)-(E4) for `k` to |c - c_exact| <= tol and a traction error (the norm of
 /// [`crate::problem::traction_distance`]) <= traction_tol (+infinity: c alone). A limit
 /// regime is taken where its bounds meet both; else the spectral solver
-/// ([`spectral_from_table`]) where it serves the coupling and meets both; else the panels,
+/// (`spectral_from_table`) where it serves the coupling and meets both; else the panels,
 /// whose stopping rule asks for
 /// c (and a relative traction agreement of about 100 tol) and whose traction estimate came
-/// out at up to [`TRACTION_PER_C`] times their tolerance on c: they are run to
+/// out at up to `TRACTION_PER_C` times their tolerance on c: they are run to
 /// min(tol, traction_tol / TRACTION_PER_C), and where the traction estimate still misses
 /// traction_tol re-run with the tolerance on c scaled down by the ratio missed (twice over),
-/// down to [`TIGHTEST`], unless they stopped at their largest order ([`at_largest_order`]).
+/// down to `TIGHTEST`, unless they stopped at their largest order (`at_largest_order`).
 pub fn solve_to(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSolution> {
     solve_with(k, tol, traction_tol, true)
 }
