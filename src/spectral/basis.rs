@@ -6,7 +6,8 @@
 //! - p: even orthonormal Legendre polynomials, and the even pole pairs
 //!   1 / (Z - tau) + 1 / (Z + tau), Z = (1 + zeta_j) / c (B1);
 //! - q: odd Legendre polynomials, (1 - tau^2)^g times odd orthonormal P^(g,g), and the odd pole
-//!   pairs 1 / (Z - tau) - 1 / (Z + tau), alone and times (1 - tau^2)^g (B2).
+//!   pairs 1 / (Z - tau) - 1 / (Z + tau), alone and, in thin slip zones, times (1 - tau^2)^g
+//!   (B2).
 //!
 //! Slip zone [c, 1], s = (2 x - c - 1) / (1 - c): p = (1 - s)^-g P^(-g,0) and
 //! (1 - s)^-g (1 + s)^g P^(-g,g), with poles 1 / (S_j - s), S_j = s(-(c + eta_j)), in both

@@ -269,10 +269,13 @@ impl Basis {
                 &stick_z,
                 -1.0,
             ),
+            // the poles times (1 - tau^2)^g only in thin slip zones (with the bonded
+            // columns): elsewhere the unweighted pairs carry the stick q's continuation to
+            // x = +-1 alone (docs/theory_spectral.md (B2), measured there)
             Block::new(
                 JacobiFamily::new(g, g, 2 * ng),
                 parity(ng, 1),
-                &stick_z,
+                if sizes.bonded > 0 { &stick_z } else { &[] },
                 -1.0,
             ),
         ];
