@@ -1111,7 +1111,7 @@ fn thin_slip_zone_estimate_covers_its_rounding() {
         panic!("not spectral")
     };
     let basis = &answer.fixed.basis;
-    let system = crate::spectral::system::assemble(basis.k, basis.c, basis.w, basis.sizes);
+    let system = crate::spectral::system::Assembled::new(basis.k, basis.c, basis.w, basis.sizes);
     assert_eq!(
         system.solve().expect("the answer's level").coef,
         answer.fixed.coef,

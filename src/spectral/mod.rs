@@ -27,7 +27,7 @@ mod tests;
 use crate::numerics::quadrature::gauss_legendre_rule;
 use crate::problem::StickEdge;
 pub(crate) use system::Constants;
-use system::{Assembled, Fixed, Sizes, assemble, solve_fixed, solve_fixed_pair};
+use system::{Assembled, Fixed, Sizes, solve_fixed_pair};
 
 /// Smallest edge exponent g the bases serve (large friction, g ~ 1/(pi b* mu~)). Measured on
 /// the grid of `coupled::tests::small_g_against_the_panels` (b* = 0.35 .. 0.99 in 8 rows, the
@@ -220,9 +220,8 @@ pub(crate) fn serves_at(b: f64, mu: f64, lc: f64) -> bool {
 
 /// sigma at lc for the level's sizes (fixed by the starting c, so that sigma(lc) is smooth).
 fn sigma_at(k: Constants, lc: f64, sizes: Sizes) -> Option<Level> {
-    let e = StickEdge::from_logit(lc);
-    let fixed = solve_fixed(k, e.c, e.one_minus_c, sizes).ok()?;
-    fixed.sigma.is_finite().then_some(Level { lc, fixed })
+    let (fixed, _) = solved_at(k, lc, sizes, false)?;
+    Some(Level { lc, fixed })
 }
 
 /// Whether the bases serve the coupling near the stick edge lc: g >= [`G_MIN`],
@@ -804,8 +803,8 @@ fn newton_ladder(
     None
 }
 
-/// The fixed-c system at lc for `sizes`, solved, as [`sigma_at`] does, with the assembled
-/// system kept where `keep` (for [`rounding_spread`]).
+/// The fixed-c system at lc for `sizes`, solved (None where it fails or sigma is not
+/// finite), with the assembled system kept where `keep` (for [`rounding_spread`]).
 fn solved_at(
     k: Constants,
     lc: f64,
@@ -813,7 +812,7 @@ fn solved_at(
     keep: bool,
 ) -> Option<(Fixed, Option<Assembled>)> {
     let e = StickEdge::from_logit(lc);
-    let system = assemble(k, e.c, e.one_minus_c, sizes);
+    let system = Assembled::new(k, e.c, e.one_minus_c, sizes);
     let fixed = system.solve().ok()?;
     fixed.sigma.is_finite().then_some(())?;
     Some((fixed, keep.then_some(system)))

@@ -580,18 +580,6 @@ pub(crate) struct Fixed {
     pub(crate) residual: f64,
 }
 
-/// Solves the fixed-c system at `sizes` (module documentation).
-pub(crate) fn solve_fixed(k: Constants, c: f64, w: f64, sizes: Sizes) -> Result<Fixed> {
-    Assembled::new(k, c, w, sizes).solve()
-}
-
-/// The fixed-c system at `sizes`, assembled, to be solved once as it stands
-/// ([`Assembled::solve`], what [`solve_fixed`] does) and again with its rows in another
-/// order ([`Assembled::solve_rows`]).
-pub(crate) fn assemble(k: Constants, c: f64, w: f64, sizes: Sizes) -> Assembled {
-    Assembled::new(k, c, w, sizes)
-}
-
 /// The fixed-c system at `sizes` and, from the same rows and the same factorisation, the
 /// system of a subset of its columns ([`Basis::coarse_columns`]): the coarser solution and
 /// the finer one, whose distance estimates the finer one's error.
@@ -620,7 +608,10 @@ pub(crate) struct Assembled {
 }
 
 impl Assembled {
-    fn new(k: Constants, c: f64, w: f64, sizes: Sizes) -> Self {
+    /// The fixed-c system at `sizes` (module documentation), assembled, to be solved once as
+    /// it stands ([`Assembled::solve`]) and, for the rounding check, again with its rows in
+    /// another order ([`Assembled::solve_rows`]).
+    pub(crate) fn new(k: Constants, c: f64, w: f64, sizes: Sizes) -> Self {
         let basis = Basis::new(k, c, w, sizes);
         let n = basis.len();
         let cols = n + 1;
@@ -722,15 +713,14 @@ impl Assembled {
     /// rounding over every coefficient (the mid-range scenes of the tests lost c at 1e-8 that
     /// way), so the pivoted QR at once, here and in [`Assembled::solve_pair`].
     pub(crate) fn solve(&self) -> Result<Fixed> {
+        self.solve_matrix(&self.a)
+    }
+
+    /// The least squares of `a` (this system's rows, in any order) under its constraints.
+    fn solve_matrix(&self, a: &[f64]) -> Result<Fixed> {
         let cols = self.basis.len() + 1;
-        let x = constrained_sized(
-            &self.a,
-            cols,
-            &vec![0.0; self.rows],
-            self.cons.clone(),
-            cols - 1,
-        )
-        .map_err(|e| self.failure(e))?;
+        let x = constrained_sized(a, cols, &vec![0.0; self.rows], self.cons.clone(), cols - 1)
+            .map_err(|e| self.failure(e))?;
         Ok(self.fixed(x))
     }
 
@@ -749,9 +739,7 @@ impl Assembled {
         for &i in order {
             a.extend_from_slice(&self.a[i * cols..(i + 1) * cols]);
         }
-        let x = constrained_sized(&a, cols, &vec![0.0; self.rows], self.cons.clone(), cols - 1)
-            .map_err(|e| self.failure(e))?;
-        Ok(self.fixed(x))
+        self.solve_matrix(&a)
     }
 
     /// The solutions on the coarser columns ([`Basis::coarse_columns`]) and on all, from one
