@@ -576,7 +576,8 @@ pub(crate) struct Fixed {
     /// The border constant of (E2) (zero at the exact c).
     pub(crate) sigma: f64,
     /// The largest residual of (E1) and (E2) at the collocation points, relative to the
-    /// smallest term of the equation there (R1).
+    /// smallest term of the equation there (R1); infinite for the coarser solution of a
+    /// pair ([`solve_fixed_pair`]), whose residual no test reads.
     pub(crate) residual: f64,
 }
 
@@ -721,7 +722,7 @@ impl Assembled {
         let cols = self.basis.len() + 1;
         let x = constrained_sized(a, cols, &vec![0.0; self.rows], self.cons.clone(), cols - 1)
             .map_err(|e| self.failure(e))?;
-        Ok(self.fixed(x))
+        Ok(self.fixed(x, true))
     }
 
     /// Number of collocation rows.
@@ -774,7 +775,7 @@ impl Assembled {
             }
             out
         };
-        Ok((self.fixed(back(xi)), self.fixed(back(xf))))
+        Ok((self.fixed(back(xi), false), self.fixed(back(xf), true)))
     }
 
     fn failure(&self, e: ConstrainedFailure) -> Error {
@@ -789,40 +790,51 @@ impl Assembled {
         })
     }
 
-    /// The solution from the scaled coefficients `full` (sigma last), with its residual (R1).
-    fn fixed(&self, full: Vec<f64>) -> Fixed {
-        let basis = &self.basis;
-        let k = basis.k;
-        let n = basis.len();
-        let cols = n + 1;
+    /// The solution from the scaled coefficients `full` (sigma last), with its residual (R1)
+    /// where `residual` (else infinite).
+    fn fixed(&self, full: Vec<f64>, with_residual: bool) -> Fixed {
+        let n = self.basis.len();
         let coef: Vec<f64> = (0..n).map(|j| full[j] * self.scale[j]).collect();
         let sigma = full[n] * self.scale[n];
-        // (R1): each row's residual relative to the smallest term of its equation, b mu p in
-        // (E1) (|q| <= mu p) and b p in (E2), in the rows' weights
-        let mut residual: f64 = 0.0;
-        let mut r = 0;
-        for (i, &stick_point) in self.on_stick.iter().enumerate() {
-            let p: f64 = self.p_rows[i * n..(i + 1) * n]
-                .iter()
-                .zip(&coef)
-                .map(|(a, b)| a * b)
-                .sum();
-            let size = k.b * p * self.weights[i];
-            for (eq, scale) in [(true, k.mu), (stick_point, 1.0)] {
-                if eq {
-                    let row = &self.a[r * cols..(r + 1) * cols];
-                    let res: f64 = row.iter().zip(&full).map(|(a, x)| a * x).sum();
-                    residual = residual.max(res.abs() / (scale * size));
-                    r += 1;
-                }
-            }
-        }
+        let residual = if with_residual {
+            self.residual(&full, &coef)
+        } else {
+            f64::INFINITY
+        };
         Fixed {
             basis: Arc::clone(&self.basis),
             coef,
             sigma,
             residual,
         }
+    }
+
+    /// (R1) of the solution with scaled coefficients `full` (sigma last) and coefficients
+    /// `coef`: each row's residual relative to the smallest term of its equation, b mu p in
+    /// (E1) (|q| <= mu p) and b p in (E2), in the rows' weights; the largest.
+    fn residual(&self, full: &[f64], coef: &[f64]) -> f64 {
+        let k = self.basis.k;
+        let n = self.basis.len();
+        let cols = n + 1;
+        let mut residual: f64 = 0.0;
+        let mut r = 0;
+        for (i, &stick_point) in self.on_stick.iter().enumerate() {
+            let p: f64 = self.p_rows[i * n..(i + 1) * n]
+                .iter()
+                .zip(coef)
+                .map(|(a, b)| a * b)
+                .sum();
+            let size = k.b * p * self.weights[i];
+            for (eq, scale) in [(true, k.mu), (stick_point, 1.0)] {
+                if eq {
+                    let row = &self.a[r * cols..(r + 1) * cols];
+                    let res: f64 = row.iter().zip(full).map(|(a, x)| a * x).sum();
+                    residual = residual.max(res.abs() / (scale * size));
+                    r += 1;
+                }
+            }
+        }
+        residual
     }
 }
 
