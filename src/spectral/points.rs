@@ -1,7 +1,6 @@
 //! Collocation points of the half problem (docs/theory_spectral.md, (C1)): Chebyshev points of
 //! each zone, plus points spaced geometrically towards x = c from both sides over the decades
-//! the poles span (down to a hundredth of the smaller of c and 1 - c relative to the zone),
-//! and towards x = 1.
+//! the poles span (down to a hundredth of the smaller of c and 1 - c relative to the zone).
 
 /// A point 0 <= x < 1 with its offsets 1 - x and x - c, each to full relative accuracy.
 #[derive(Clone, Copy, Debug)]
@@ -46,17 +45,40 @@ impl Pt {
 /// Geometric points per decade towards the ends.
 const PER_DECADE: f64 = 3.0;
 
-/// The geometric clusters start at this fraction of the zone.
+/// The slip zone's geometric cluster starts at this fraction of the zone.
 const CLUSTER_FROM: f64 = 0.1;
+
+/// The stick zone's geometric cluster starts at this fraction of the zone, where its
+/// Chebyshev points thin out: at level 1.5 the nearest lies 2e-3 c from x = c, so from a
+/// tenth of the zone down to there the cluster's points only doubled theirs. Measured on
+/// the 10 spectral speed scenes with the cluster towards x = 1 gone ([`collocation`]; c to
+/// 1e-10; thread CPU time, the median over the scenes, alternated in one run; true error
+/// against the panels at (1e-13, 1e-11)), both clusters from the same fraction:
+///
+/// | clusters from | tractions 1e-8 | largest true / estimate |
+/// |---|---|---|
+/// | 0.1 | 0.139 ms | 0.051 |
+/// | 0.03 | 0.133 ms | 0.050 |
+/// | 0.01 | 0.126 ms | 0.056 |
+///
+/// (every answer at the same level and within its estimate). The slip zone's cluster keeps
+/// 0.1: from 0.01 there, `coupled::tests::spectral_agrees_with_the_panels_on_a_grid` caught
+/// b* = 0.4933, mu~ = 0.1196 (c = 2.3e-3) answering 6.1e-9 from the panels against an
+/// estimate of 6.8e-9 (from 0.1: 3.5e-12 against 5.7e-10), the slip tractions next to a
+/// small stick zone varying on the scale c out to a tenth of the zone; the stick zone's
+/// from 0.01 left that point and the slow tier's thin slip zones within their estimates.
+/// Fewer points per decade instead (2, both from 0.1) let the ply at mu = 0.1
+/// (c = 4.8e-5) answer 2.7e-9 from the panels against an estimate of 2.9e-9.
+const STICK_CLUSTER_FROM: f64 = 0.01;
+
+/// The clusters reach at least this fraction of the zone.
+const CLUSTER_FLOOR: f64 = 1e-3;
 
 /// The clusters reach down to this fraction of the smaller scale at the stick edge (the
 /// nearest pole sits at a tenth of it, docs/theory_spectral.md (B4)).
 const CLUSTER_DEPTH: f64 = 1e-2;
 
-/// The cluster towards x = 1 reaches (1 - c) times this (the edge exponent is in the basis).
-const EDGE_DEPTH: f64 = 1e-6;
-
-/// log-spaced fractions from CLUSTER_FROM down to `depth`.
+/// log-spaced fractions from `from` down to `depth`.
 fn decades(from: f64, depth: f64) -> Vec<f64> {
     let n = ((from / depth).log10() * PER_DECADE).ceil().max(1.0) as usize;
     (0..=n)
@@ -66,13 +88,20 @@ fn decades(from: f64, depth: f64) -> Vec<f64> {
 
 /// Stick points (x < c) and slip points (x > c) for the stick edge c (1 - c = w), with about
 /// `stick` and `slip` Chebyshev points.
+///
+/// No cluster towards x = 1: the edge exponent is in the slip families' weight, and the
+/// Chebyshev points reach 1.5e-3 (1 - c) from the end at level 1.5. A cluster there of three
+/// points per decade down to 1e-6 (1 - c) (16 rows, a fifth of level 1.5's) changed no
+/// answer's level on the 10 spectral speed scenes and made them 1.14-1.16 times faster
+/// (median 0.160 to 0.139 ms at tractions to 1e-8, 0.405 to 0.349 ms at 1e-10, alternated in
+/// one run; largest true error / estimate against the panels 0.033 to 0.051 and 0.083 to
+/// 0.093); down to 1e-3 or 1e-2 (1 - c) it gave 0.146 and 0.141 ms.
 pub(crate) fn collocation(c: f64, w: f64, stick: usize, slip: usize) -> (Vec<Pt>, Vec<Pt>) {
     // the stick functions' poles sit at 1 + zeta, zeta >= (1 - c) / 10; the slip functions' at
     // -(c + eta), eta >= c / 10: the clusters reach a hundredth of those scales
-    let floor = CLUSTER_FROM * 1e-2;
     let (stick_depth, slip_depth) = (
-        (CLUSTER_DEPTH * w / c).min(floor),
-        (CLUSTER_DEPTH * c / w).min(floor),
+        (CLUSTER_DEPTH * w / c).min(CLUSTER_FLOOR),
+        (CLUSTER_DEPTH * c / w).min(CLUSTER_FLOOR),
     );
     let mut st = Vec::new();
     // tau = cos(theta), theta in (0, pi/2): c - x = c (1 - cos theta) = 2 c sin^2(theta / 2)
@@ -85,7 +114,7 @@ pub(crate) fn collocation(c: f64, w: f64, stick: usize, slip: usize) -> (Vec<Pt>
             xmc: -d,
         });
     }
-    for f in decades(CLUSTER_FROM, stick_depth) {
+    for f in decades(STICK_CLUSTER_FROM, stick_depth) {
         let d = c * f;
         st.push(Pt {
             x: c - d,
@@ -109,13 +138,6 @@ pub(crate) fn collocation(c: f64, w: f64, stick: usize, slip: usize) -> (Vec<Pt>
             x: c + w * f,
             omx: w * (1.0 - f),
             xmc: w * f,
-        });
-    }
-    for f in decades(CLUSTER_FROM, EDGE_DEPTH) {
-        sl.push(Pt {
-            x: 1.0 - w * f,
-            omx: w * f,
-            xmc: w * (1.0 - f),
         });
     }
     (st, sl)
