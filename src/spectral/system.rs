@@ -91,6 +91,8 @@ impl Sizes {
                 (stick_decades
                     * if bonded {
                         BONDED_STICK_DENSITY
+                    } else if l >= STICK_EXTRA_FROM {
+                        per_decade + STICK_EXTRA_DENSITY
                     } else {
                         per_decade
                     })
@@ -106,6 +108,32 @@ impl Sizes {
         }
     }
 }
+
+/// Stick pole pairs per decade added from level [`STICK_EXTRA_FROM`] on (where the slip zone
+/// is not thin; there [`BONDED_STICK_DENSITY`] holds). Where the stick poles span about two
+/// decades (1 - c = 0.13, c = 0.87) the levels' traction errors at the tabulated c against
+/// level 8 fell by only 3 from level 2 to 2.5 (their distance to their coarser columns
+/// 1.8e-9, 6.2e-10), and by 20 to level 3, the first to add a pole pair (2 + l / 2 per
+/// decade over 1.82 decades: 6, 6, 7 pairs): the stick poles, not the degrees, set the pace.
+/// Measured on the 10 spectral speed scenes (c to 1e-10; thread CPU time, the median over
+/// the scenes, the offsets alternated in one run; true error against the panels at
+/// (1e-13, 1e-11)), the offset at every level:
+///
+/// | offset per decade | tractions 1e-10 | the two scenes at 1 - c = 0.13 | 1e-8 |
+/// |---|---|---|---|
+/// | 0 | 0.353 ms | 0.392 ms, 60 unknowns | 0.135 ms |
+/// | 0.5 | 0.333 ms | 0.41-0.42 ms, 62 | |
+/// | 1 | 0.251 ms | 0.184-0.189 ms, 57 | 0.140 ms |
+/// | 1.5 | 0.252 ms | 0.189-0.191 ms, 59 | |
+///
+/// (every answer within its estimate, largest true / estimate 0.082 with each). At tractions
+/// to 1e-8 the offset only added 4 unknowns to three scenes, so it starts at level 2.5, the
+/// first level at tractions to 1e-10 where 1 - c = 0.01 .. 0.2 (`first_half_level` in
+/// `spectral`): from level 2 the median at 1e-8 went 0.124 to 0.138 ms (the two scenes at
+/// 1 - c = 0.13 start at level 2 there), from level 2.5 it stayed at 0.123-0.124 ms while
+/// the median at 1e-10 went 0.357, 0.356 to 0.301, 0.303 ms (alternated twice in one run).
+const STICK_EXTRA_DENSITY: f64 = 1.0;
+const STICK_EXTRA_FROM: f64 = 2.5;
 
 /// The slip families' degrees above level 1 where the slip zone is not thin (no bonded
 /// columns, 1 - c >= [`BONDED_BELOW`]): 2 + 3 l for P^(-g,0) and 2 l for P^(-g,g) at level
