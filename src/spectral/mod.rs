@@ -123,6 +123,17 @@ const W_MIN: f64 = 2.5e-13;
 /// answer there.
 const C_MIN: f64 = 1e-11;
 
+/// Smallest traction tolerance at which the bases serve stick zones below
+/// `system::SMALL_STICK_BELOW` (c < 4e-5), the smallest measured ([`C_MIN`]'s table). On the
+/// same 15 x 61 sweep at (1e-6, 1e-4) and (1e-8, 1e-6) the 57 and 107 answers all lay within
+/// their estimates of the panels at (1e-12, 1e-10) (at most 0.089 and 0.148, 0.47 and 0.48 ms
+/// median); at (1e-12, 1e-12) 85 of 197 answered and 55 lay above their own estimates of
+/// 5e-15 .. 6e-14 against those panels (true errors up to 1.3e-12, the reference's own),
+/// and up to 14.8 times above them against the panels at (1e-13, 1e-11), which in most of
+/// those points gave the same answer as at (1e-12, 1e-10): no reference there is
+/// independent and tight enough to check them, so the panels answer, as before.
+const SMALL_STICK_TRACTION_TOL: f64 = 1e-10;
+
 /// Smallest stick zone [`from_guess`] serves (b* < 0.25 under the table's strips, and
 /// anywhere outside the table), the smallest the bases served before the slip points of
 /// `system::SMALL_STICK_BELOW`: measured from Spence's start on b* = 0.02 .. 0.24 (12 rows)
@@ -279,7 +290,10 @@ pub(crate) fn from_edge(
     traction_tol: f64,
     delta: f64,
 ) -> Option<Spectral> {
-    if !serves(k, lc) {
+    if !serves(k, lc)
+        || (StickEdge::from_logit(lc).c < system::SMALL_STICK_BELOW
+            && traction_tol < SMALL_STICK_TRACTION_TOL)
+    {
         return None;
     }
     let mut first = First {
