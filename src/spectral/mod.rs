@@ -97,11 +97,53 @@ const G_MIN: f64 = 0.002;
 /// [`from_edge`] answered at level 8.
 const W_MIN: f64 = 2.5e-13;
 
-/// Smallest stick zone the bases serve in this phase, the smallest measured: at c = 4.8e-5
-/// (the carbon ply at mu = 0.1) the answer passed GSL's pointwise check in
-/// tests/c/coupled_residuals.c and agreed with the panels' tractions to 4.8e-12
-/// (examples/spectral_timing.rs).
-const C_MIN: f64 = 4e-5;
+/// Smallest stick zone the bases serve from the tabulated stick edge. Below c = 4e-5
+/// (`system::SMALL_STICK_BELOW`) the slip zone has one collocation point more per slip pole
+/// column and decade of x - c. Measured from the table's edge (as COUPLED calls
+/// [`from_edge`]), c to 1e-10, each answer against the panels at (1e-12, 1e-10)
+/// (docs/theory_spectral.md section 5, "Small stick zones"), on b* = 0.25 .. 0.95 (15 rows)
+/// by mu~ = 0.01 .. 1 (61 log-spaced), the points with 1e-13 < c < 4e-5 that the
+/// full-slip limit does not answer:
+///
+/// | c | tractions | points | answered | largest true / estimate | unknowns | median, max |
+/// |---|---|---|---|---|---|---|
+/// | 1e-11 .. 4e-5 | 1e-8 | 148 | 148 | 0.32 | 58-101 | 0.51, 0.95 ms |
+/// | 1e-11 .. 4e-5 | 1e-10 | 165 | 165 | 0.81 (one more below) | 67-138 | 0.60, 5.9 ms |
+/// | 2e-12 .. 1e-11 | 1e-10 | 6 | 2 | 0.24 (c) | 153, 224 | 9.1, 15.5 ms |
+///
+/// (thread CPU time of single answers; c's estimate is the table's bound, the answers' c
+/// within 5e-4 of it from the panels'; the last row with this limit lowered). One answer at
+/// (1e-10, 1e-10), b* = 0.75, mu~ = 0.0681 (c = 3.7e-11), lay 4.3e-13 from the panels at
+/// (1e-12, 1e-10) against its estimate of 3.4e-13, and 9.1e-14 from the panels at
+/// (1e-13, 1e-11), which lay 3.9e-13 from the first: the reference's error, not the
+/// answer's. Below c = 1e-11 the table ends (its zeta = 0 is the full-slip law's
+/// c = 1e-11) and the answers come from Spence's stick edge ([`from_guess`], which keeps
+/// [`GUESS_C_MIN`]), after 9-15 ms or not at all (at b* = 0.95, mu~ = 0.1343,
+/// c = 1.4e-12, the residual (R1) stayed at 2e-10 .. 6e-10 over levels 2-10); the panels
+/// answer there.
+const C_MIN: f64 = 1e-11;
+
+/// Smallest traction tolerance at which the bases serve stick zones below
+/// `system::SMALL_STICK_BELOW` (c < 4e-5), the smallest measured ([`C_MIN`]'s table). On the
+/// same 15 x 61 sweep at (1e-6, 1e-4) and (1e-8, 1e-6) the 57 and 107 answers all lay within
+/// their estimates of the panels at (1e-12, 1e-10) (at most 0.089 and 0.148, 0.47 and 0.48 ms
+/// median); at (1e-12, 1e-12) 85 of 197 answered and 55 lay above their own estimates of
+/// 5e-15 .. 6e-14 against those panels (true errors up to 1.3e-12, the reference's own),
+/// and up to 14.8 times above them against the panels at (1e-13, 1e-11), which in most of
+/// those points gave the same answer as at (1e-12, 1e-10): no reference there is
+/// independent and tight enough to check them, so the panels answer, as before.
+const SMALL_STICK_TRACTION_TOL: f64 = 1e-10;
+
+/// Smallest stick zone [`from_guess`] serves (b* < 0.25 under the table's strips, and
+/// anywhere outside the table), the smallest the bases served before the slip points of
+/// `system::SMALL_STICK_BELOW`: measured from Spence's start on b* = 0.02 .. 0.24 (12 rows)
+/// by mu~ = 1e-3 .. 0.32 (40 log-spaced), c = 1.9e-11 .. 4e-5, against the panels at
+/// (1e-12, 1e-10), the 61 and 66 points answered in a median 3.0 and 3.1 ms (the root
+/// search from the guess, levels 2-4), and at (1e-10, 1e-10) 5 of 66 missed their own
+/// estimates (true / estimate up to 4.4 in the tractions, 3.7 in c, the tractions' true
+/// errors 2e-15 .. 4e-13, at the reference's own accuracy); not served until measured
+/// against a tighter reference.
+const GUESS_C_MIN: f64 = 4e-5;
 
 /// Largest b* the bases serve in this phase: the largest of the table's grids, 0.989, where
 /// every point answered at level 3 and agreed with the panels (c = 2.9e-4 .. 4.1e-2).
@@ -248,7 +290,10 @@ pub(crate) fn from_edge(
     traction_tol: f64,
     delta: f64,
 ) -> Option<Spectral> {
-    if !serves(k, lc) {
+    if !serves(k, lc)
+        || (StickEdge::from_logit(lc).c < system::SMALL_STICK_BELOW
+            && traction_tol < SMALL_STICK_TRACTION_TOL)
+    {
         return None;
     }
     let mut first = First {
@@ -309,7 +354,7 @@ pub(crate) fn from_guess(
     }
     let at = |lc: f64| {
         let e = StickEdge::from_logit(lc);
-        serves(k, lc)
+        (serves(k, lc) && e.c >= GUESS_C_MIN)
             .then(|| sigma_at(k, lc, Sizes::at(FIRST_LEVEL, e.c, e.one_minus_c)))
             .flatten()
     };
@@ -419,6 +464,17 @@ const SENSITIVITY_BOUNDS: [SensitivityBand; 11] = [
 /// the slope and the move, one more solve.)
 const RATE_PER_C: (f64, f64) = (55.0, 70.0);
 
+/// Lower bounds on [`RATE_PER_C`]'s bound on the move per lc, (int |dp|, int |dq~|) / dlc: below
+/// c = 4e-5 (served since `system::SMALL_STICK_BELOW`) the move measured at level 1 over
+/// lc + [`SLOPE_STEP`] does not fall with c. On the 165 points with c = 1.2e-11 .. 4e-5 of
+/// b* = 0.25 .. 0.95 (15 rows) by mu~ = 0.01 .. 1 (61 log-spaced) it was 1e-7 .. 2.7e-6 (p)
+/// at c < 1e-8 whatever c, up to 3700 times [`RATE_PER_C`]'s bound (b* = 0.95,
+/// c = 1.3e-11: 2.65e-6): level 1's own change over the step rather than the tractions'
+/// (measured the same way at level 3, at most 4.1 times that bound). The largest anywhere
+/// below 4e-5 were 3.6e-5 (p) and 4.5e-5 (q~). The floors are twice those, and lie below
+/// [`RATE_PER_C`]'s bound from c = 1.3e-6 up, so nothing changes above that.
+const RATE_FLOOR: (f64, f64) = (7.2e-5, 8.9e-5);
+
 /// The stick zones below which [`RATE_PER_C`] bounds the move per lc too.
 const SMALL_C: f64 = 0.01;
 
@@ -430,8 +486,8 @@ fn sensitivity_bounds(b: f64, c: f64, w: f64) -> ((f64, f64), (f64, f64)) {
         .find(|r| b < r.0)
         .unwrap_or(&SENSITIVITY_BOUNDS[SENSITIVITY_BOUNDS.len() - 1]);
     if c < SMALL_C {
-        p = p.min(RATE_PER_C.0 * c * w);
-        q = q.min(RATE_PER_C.1 * c * w);
+        p = p.min((RATE_PER_C.0 * c * w).max(RATE_FLOOR.0));
+        q = q.min((RATE_PER_C.1 * c * w).max(RATE_FLOOR.1));
     }
     ((p, q), by_sigma)
 }

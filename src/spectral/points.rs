@@ -142,3 +142,25 @@ pub(crate) fn collocation(c: f64, w: f64, stick: usize, slip: usize) -> (Vec<Pt>
     }
     (st, sl)
 }
+
+/// More slip points towards x = c for a small stick zone ([`super::system::SMALL_STICK_BELOW`]):
+/// `per_decade` per decade of x - c over the range of [`collocation`]'s cluster there (from
+/// [`CLUSTER_FROM`] of the slip zone down to [`CLUSTER_DEPTH`] c), log-spaced at the
+/// midpoints of their own steps. The slip poles at x = -(c + eta) put the slip columns'
+/// variation over the decades of x - c from c / 10 up (docs/theory_spectral.md (C1)).
+pub(crate) fn small_stick_slip_points(c: f64, w: f64, per_decade: f64) -> Vec<Pt> {
+    let depth = (CLUSTER_DEPTH * c / w).min(CLUSTER_FLOOR);
+    let n = ((CLUSTER_FROM / depth).log10() * per_decade)
+        .ceil()
+        .max(1.0) as usize;
+    (0..n)
+        .map(|i| {
+            let f = CLUSTER_FROM * (depth / CLUSTER_FROM).powf((i as f64 + 0.5) / n as f64);
+            Pt {
+                x: c + w * f,
+                omx: w * (1.0 - f),
+                xmc: w * f,
+            }
+        })
+        .collect()
+}

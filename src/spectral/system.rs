@@ -24,7 +24,7 @@ use super::basis::{Block, Family, parity};
 use crate::numerics::quotient::QuotientFamily;
 
 type C64 = Complex<f64>;
-use super::points::{Pt, collocation};
+use super::points::{Pt, collocation, small_stick_slip_points};
 
 /// The reduced problem's constants: bp = bq = b (b*), friction mu (mu~), edge exponent g.
 #[derive(Clone, Copy, Debug)]
@@ -48,7 +48,9 @@ pub(crate) struct Sizes {
     /// Columns X x^(2k) and i X x^(2k+1), k < bonded, on the stick zone ((X1)).
     pub(crate) bonded: usize,
     /// Factor on the collocation points per unknown ([`STICK_POINTS`], [`SLIP_POINTS`]):
-    /// 1 at level 1 and below and where c < [`DENSE_BELOW_C`], [`SPARSE_POINTS`] above. The
+    /// 1 at level 1 and below and where [`SMALL_STICK_BELOW`] <= c < [`DENSE_BELOW_C`],
+    /// [`SPARSE_POINTS`] above (and below [`SMALL_STICK_BELOW`], whose own slip points carry
+    /// the decades next to x = c). The
     /// rule on c is here, with the sizes fixed by the starting c, so that sigma(lc) stays
     /// smooth across the trial c of one search; g's rule ([`DENSE_BELOW_G`]) is fixed per
     /// answer and applied at the assembly.
@@ -100,7 +102,7 @@ impl Sizes {
                 (slip_decades * per_decade).ceil() as usize,
             ],
             bonded: if bonded { BONDED } else { 0 },
-            points: if l <= 1.0 || c < DENSE_BELOW_C {
+            points: if l <= 1.0 || (SMALL_STICK_BELOW..DENSE_BELOW_C).contains(&c) {
                 1.0
             } else {
                 SPARSE_POINTS
@@ -594,6 +596,49 @@ const DENSE_BELOW_C: f64 = 2e-3;
 /// below g = 0.015; with the full points below 0.02, 762 of 765 answered.
 const DENSE_BELOW_G: f64 = 0.02;
 
+/// Below this stick edge (the smallest served before, `spectral::C_MIN` of the session that
+/// measured it) the slip zone gets one more collocation point per slip pole column and
+/// decade of x - c, next to the cluster's three per decade ([`slip_columns_per_decade`],
+/// [`small_stick_slip_points`]), and the levels above 1 the sparser Chebyshev points
+/// ([`SPARSE_POINTS`]). Next to a small stick zone the slip tractions vary over the decades
+/// of x - c from c up, and the slip poles at x = -(c + eta) give both slip blocks
+/// 2 (2 + l/2) columns per decade there (5.5-7 at levels 1.5-3) against the cluster's three
+/// rows: the least squares was underdetermined decade by decade, and the levels' common
+/// error lay between the rows (b* = 0.85, mu~ = 0.1343, c = 7.7e-8, at (1e-10, 1e-8): p off
+/// the panels by 1.1e-4 .. 3.3e-4 of p at x - c = 10 c .. 100 c, 2.3e-8 in the traction
+/// distance against an estimate of 2.8e-9; with 6 rows per decade 2.4e-12 against 1.8e-11,
+/// the same 83 unknowns). Measured on the 26 and 31 points with 1e-13 < c < 4e-5 of
+/// b* = 0.25 .. 0.95 (8 rows) by mu~ = 0.01 .. 100 (40 log-spaced) that the full-slip limit
+/// does not answer, c to 1e-10, each answer against the panels at (1e-12, 1e-10) (true
+/// traction error over the answer's own estimate; thread CPU time of single answers):
+///
+/// | slip rows per decade of x - c | tractions 1e-8: failed, largest | median, max | 1e-10: failed, largest | median, max |
+/// |---|---|---|---|---|
+/// | 3 (the cluster alone) | 17 of 26, 5102 | 0.60, 1.47 ms | 21 of 30, 1778 | 0.80, 2.58 ms |
+/// | 3 + a quarter column each | 3 of 26, 70 | 0.62, 1.18 ms | 10 of 30, 496 | 0.76, 1.85 ms |
+/// | 6 | 0 of 26, 0.36 | 0.67, 1.25 ms | 0 of 30, 0.48 | 0.82, 3.29 ms |
+/// | 3 + half a column each | 0 of 26, 0.31 | 0.62, 1.04 ms | 0 of 30, 0.54 | 0.87, 3.36 ms |
+/// | 3 + one each, full points | 0 of 26, 0.32 | 0.71, 1.16 ms | 0 of 30, 0.34 | 0.91, 4.67 ms |
+/// | 3 + one each, sparser points (this rule) | 0 of 26, 0.35 | 0.50, 0.97 ms | 0 of 30, 0.50 | 0.63, 2.10 ms |
+/// | the same with `spectral::RATE_FLOOR` | 0 of 26, 0.24 | 0.53, 0.87 ms | 0 of 30, 0.57 | 0.63, 2.90 ms |
+///
+/// With half a column each the rows only match the columns at level 2; one each keeps a
+/// row per column at every level. The full points (kept below [`DENSE_BELOW_C`] for the
+/// decades next to x = c, (C1)) are not needed once these rows carry them: with the sparser
+/// ones the answers were as near the panels (largest true / estimate 0.35 and 0.50) and
+/// pointwise, at x - c = 0.1 c .. 1 - c, no farther (the largest pointwise distance over
+/// the estimate 16 and 49 against 17 and 80 with the full points; both at the panels' own
+/// pointwise error next to x = c, section 4).
+pub(crate) const SMALL_STICK_BELOW: f64 = 4e-5;
+
+/// The slip pole columns per decade of their distances (both slip blocks, [`pole_ranges`]'
+/// slip range): the extra slip points per decade of [`SMALL_STICK_BELOW`].
+fn slip_columns_per_decade(c: f64, w: f64, sizes: Sizes) -> f64 {
+    let [_, [near, far]] = pole_ranges(c, w);
+    let decades = (far / near).log10().max(1.0);
+    2.0 * sizes.poles[1] as f64 / decades
+}
+
 /// The solution of the fixed-c system.
 #[derive(Clone, Debug)]
 pub(crate) struct Fixed {
@@ -649,12 +694,19 @@ impl Assembled {
         } else {
             sizes.points
         };
-        let (stick, slip) = collocation(
+        let (stick, mut slip) = collocation(
             c,
             w,
             (points * STICK_POINTS * cols as f64).ceil() as usize,
             (points * SLIP_POINTS * cols as f64).ceil() as usize,
         );
+        if c < SMALL_STICK_BELOW {
+            slip.extend(small_stick_slip_points(
+                c,
+                w,
+                slip_columns_per_decade(c, w, sizes),
+            ));
+        }
         let rows = 2 * stick.len() + slip.len();
         let mut a = vec![0.0; rows * cols];
         let (mut pv, mut qv, mut hp, mut hq) =
