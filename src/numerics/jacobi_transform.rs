@@ -24,7 +24,7 @@
 use std::f64::consts::PI;
 
 use super::orthopoly::{JacobiRecurrence, jacobi_mass};
-use super::special::{Hyp2f1, hyp2f1_series, sin_pi, tan_pi};
+use super::special::{Hyp2f1, hyp2f1_series, tan_pi};
 
 /// A real point y with its offsets 1 - y and 1 + y, each to full relative accuracy.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -235,8 +235,6 @@ impl JacobiFamily {
             } else {
                 -inside(b, a, mass, swapped, p.reflected())
             }
-        } else if a + b == 0.0 {
-            outside_opposite(a, p)
         } else if p.omy < 0.0 {
             right_of(a, mass, own, p)
         } else {
@@ -340,24 +338,6 @@ fn inside(a: f64, b: f64, mass: f64, ends: &Ends, p: Point) -> f64 {
     w / tan_pi(a) - mass * (a + b + 1.0) / (2.0 * PI * a) * f
 }
 
-/// T_0 outside [-1, 1] for opposite exponents, b = -a (docs/theory_spectral.md (T0a)):
-/// expm1(a ln r) / sin(pi a), r = |1 - y| / |1 + y|, with no 2F1. ln r from the offsets:
-/// for y > 1, r = 1 - 2 / (1 + y), by ln_1p where r >= 1/2 and as ln((y - 1) / (1 + y))
-/// nearer the end; for y < -1, r = 1 + 2 / |1 + y|.
-fn outside_opposite(a: f64, p: Point) -> f64 {
-    let ln_r = if p.omy < 0.0 {
-        let x = 2.0 / p.opy;
-        if x <= 0.5 {
-            (-x).ln_1p()
-        } else {
-            (-p.omy / p.opy).ln()
-        }
-    } else {
-        (2.0 / -p.opy).ln_1p()
-    };
-    (a * ln_r).exp_m1() / sin_pi(a)
-}
-
 /// (J3) for y > 1: -(mu_0 / pi) 2F1(1, b+1; a+b+2; zeta) / (1 + y), zeta = 2 / (1 + y).
 fn right_of(a: f64, mass: f64, ends: &Ends, p: Point) -> f64 {
     let zeta = 2.0 / p.opy;
@@ -417,37 +397,6 @@ mod tests {
                         "({a}, {b}) y = {y} k = {k}: {} vs {}",
                         t[k],
                         q[k]
-                    );
-                }
-            }
-        }
-    }
-
-    /// (T0a) for opposite exponents outside against the 2F1 route (J3) it replaces, from
-    /// far away to 1e-13 from either end.
-    #[test]
-    fn opposite_exponents_outside_match_the_2f1_route() {
-        for a in [-0.49, -0.3, -0.05, -0.002, 0.002, 0.1, 0.47] {
-            let fam = JacobiFamily::new(a, -a, 1);
-            let [own, swapped] = &fam.ends;
-            for d in [1e-13, 1e-6, 0.01, 0.3, 1.0, 2.5, 40.0, 1e5] {
-                for right in [true, false] {
-                    // y = 1 + d or y = -1 - d, its offsets exact
-                    let p = if right {
-                        Point::offsets(-d, 2.0 + d)
-                    } else {
-                        Point::offsets(2.0 + d, -d)
-                    };
-                    let by_2f1 = if right {
-                        right_of(a, fam.mass, own, p)
-                    } else {
-                        -right_of(-a, fam.mass, swapped, p.reflected())
-                    };
-                    let closed = outside_opposite(a, p);
-                    let err = (closed - by_2f1).abs() / by_2f1.abs();
-                    assert!(
-                        err < 4e-15,
-                        "a = {a}, d = {d}, right {right}: {closed} vs {by_2f1}"
                     );
                 }
             }
