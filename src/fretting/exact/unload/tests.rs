@@ -837,3 +837,234 @@ fn corner_widths_along_b_star() {
     }
     assert!(reached <= 0.77, "{reached}");
 }
+
+/// The outer model of the corner (docs/theory_tangential.md section 20) against the
+/// five-zone solver along the b* family of section 19 (b* = bp = bq, mu = 1, Q* = 0.3 P,
+/// Q = 0.9 Q*, level 3): the five-zone answers by the continuation of
+/// `corner_widths_along_b_star` (b* = 0.9 and 0.85 from the grid), the outer model from each
+/// five-zone answer's (e2, a1, a2). The outer model neglects the inner region's departure
+/// from the bonded field, relatively O(e1 / (1 + x)) (section 20), so its ends must agree
+/// with the five-zone ones to within e1/e2 relatively; the outer field's first zero u0 of
+/// q + mu p below e2 must lie below e2 and its ratio e1/u0 (the inner problem's constant)
+/// is printed. Then the outer model alone below b* = 0.735, each answer from the one before
+/// with the ends scaled by w1*; it must reach b* = 0.6.
+#[test]
+#[ignore = "slow: about 90 s, the five-zone continuation and the outer model per b*"]
+fn outer_model_along_b_star() {
+    let eps_of = |b: f64| b.atanh() / std::f64::consts::PI;
+    let (q_star, qp) = (0.3, 0.27);
+    let kb = |b: f64| Coupling {
+        bp: b,
+        bq: b,
+        mu: 1.0,
+    };
+    let compare = |b: f64, m: &Monotonic, five: &corner::CornerLevel| -> corner::OuterLevel {
+        let t = std::time::Instant::now();
+        let y0 = [five.x[1], five.x[2], five.x[3]];
+        let o = corner::outer_level(m, y0, qp, 3, 1e-10, &mut None).unwrap();
+        let sigma = o.state.sigma.iter().fold(0.0f64, |a, s| a.max(s.abs()));
+        let rel: Vec<f64> = (0..3).map(|i| (o.x[i] - y0[i]) / y0[i]).collect();
+        let ratio = five.x[0] / five.x[1];
+        let u0 = corner::first_zero(&o.state, 1.0, 0.5 * o.x[0], 0.95).unwrap();
+        let w1 = m.stick_set().0;
+        println!(
+            "b* = {b:.3}, eps {:.4}: e1/e2 = {ratio:.3e}; outer 1 + e2 = {:.6e}, a1 = {:.9}, \
+             1 - a2 = {:.6e}; relative to five-zone {:.2e} {:.2e} {:.2e} (over e1/e2: {:.3} \
+             {:.4} {:.4}); u0 = {u0:.4e}, e1/u0 = {:.3}, eps ln(e2/u0) = {:.4}, \
+             e2/w1* = {:.4}; sigma {sigma:.1e}, {:?}",
+            eps_of(b),
+            o.x[0],
+            o.x[1] - 1.0,
+            o.x[2],
+            rel[0],
+            rel[1],
+            rel[2],
+            rel[0] / ratio,
+            rel[1] / ratio,
+            rel[2] / ratio,
+            five.x[0] / u0,
+            eps_of(b) * (o.x[0] / u0).ln(),
+            o.x[0] / w1,
+            t.elapsed()
+        );
+        assert!(sigma < 1e-7, "{sigma:e}");
+        assert!(
+            rel.iter().all(|r| r.abs() < ratio),
+            "{rel:?} against {ratio:e}"
+        );
+        assert!(u0 < o.x[0]);
+        // the matching: the five-zone layer's increment f = dp + i dq / delta over u^beta
+        // against the outer field's, at 1 + x = u in the layer; apart by O(e1/u)
+        let beta = faer::complex::Complex::new(-0.5, eps_of(b));
+        let amp = |st: &crate::fretting::exact::frame::Solved, u: f64| {
+            let (p, q) = st.tractions(u, 2.0 - u);
+            let (ps, qs) = m.tractions(u, 2.0 - u);
+            faer::complex::Complex::new(p - ps, q - qs) / (beta * u.ln()).exp()
+        };
+        let (e1, e2) = (five.x[0], five.x[1]);
+        for u in [10.0 * e1, (e1 * e2).sqrt(), 0.1 * e2] {
+            let (a5, ao) = (amp(&five.state, u), amp(&o.state, u));
+            let d = (a5 - ao).norm() / ao.norm();
+            println!(
+                "  at 1 + x = {u:.3e}: |A| = {:.5e} (outer) {:.5e} (five-zone), arg A = {:.5} \
+                 {:.5}; apart {d:.2e} relatively, {:.3} e1/u",
+                ao.norm(),
+                a5.norm(),
+                ao.arg(),
+                a5.arg(),
+                d * u / e1
+            );
+            assert!(d < e1 / u, "{d:e} at {u:e}");
+        }
+        o
+    };
+    // b* = 0.9 from the grid
+    let k = kb(0.9);
+    let m = monotonic(&k, q_star, 1e-10, 1e-8).unwrap();
+    let five = corner::corner_level(
+        &m,
+        corner_start(&k, 200, q_star, qp),
+        qp,
+        3,
+        1e-10,
+        &mut None,
+    )
+    .unwrap();
+    compare(0.9, &m, &five);
+    // 0.85 .. 0.735 by the five-zone continuation
+    let mut b = 0.85;
+    let k = kb(b);
+    let m = monotonic(&k, q_star, 1e-10, 1e-8).unwrap();
+    let mut five = corner::corner_level(
+        &m,
+        corner_start(&k, 200, q_star, qp),
+        qp,
+        3,
+        1e-10,
+        &mut None,
+    )
+    .unwrap();
+    let mut w_prev = m.stick_set().0;
+    let mut outer = compare(b, &m, &five);
+    for bn in [0.81, 0.77, 0.75, 0.74] {
+        let k = kb(bn);
+        let m = monotonic(&k, q_star, 1e-10, 1e-8).unwrap();
+        let w1 = m.stick_set().0;
+        let r = w1 / w_prev;
+        let x = five.x;
+        let e2 = x[1] * r;
+        let y0 = [
+            e2 * (x[0] / x[1]).powf(eps_of(b) / eps_of(bn)),
+            e2,
+            w1 + (x[2] - w_prev) * r,
+            x[3] * r,
+        ];
+        five = corner::corner_level(&m, y0, qp, 3, 1e-10, &mut None).unwrap();
+        assert!(five.state.sigma.iter().all(|s| s.abs() < 1e-6));
+        outer = compare(bn, &m, &five);
+        (b, w_prev) = (bn, w1);
+    }
+    // below: the outer model alone
+    let mut reached = b;
+    for bn in [0.72, 0.7, 0.68, 0.65, 0.62, 0.6, 0.55, 0.5, 0.45, 0.4] {
+        let t = std::time::Instant::now();
+        let k = kb(bn);
+        let Ok(m) = monotonic(&k, q_star, 1e-10, 1e-8) else {
+            println!("b* = {bn}: the loaded state refused");
+            break;
+        };
+        let w1 = m.stick_set().0;
+        let r = w1 / w_prev;
+        let x = outer.x;
+        let y0 = [x[0] * r, w1 + (x[1] - w_prev) * r, x[2] * r];
+        match corner::outer_level(&m, y0, qp, 3, 1e-10, &mut None) {
+            Ok(o) if o.state.sigma.iter().all(|s| s.abs() < 1e-7) => {
+                let u0 = corner::first_zero(&o.state, 1.0, 0.5 * o.x[0], 0.95);
+                println!(
+                    "b* = {bn:.3}, eps {:.4}: w1* = {w1:.4e}, outer 1 + e2 = {:.4e}, \
+                     a1 = {:.9}, 1 - a2 = {:.4e}; e2/w1* = {:.4}, (a1 - c1*)/w1* = {:.4}, \
+                     (1 - a2)/w1* = {:.4}; u0 = {u0:?}, eps ln(e2/u0) = {:.4}; sigma \
+                     {:.1e}, {:?}",
+                    eps_of(bn),
+                    o.x[0],
+                    o.x[1] - 1.0,
+                    o.x[2],
+                    o.x[0] / w1,
+                    (o.x[1] - w1) / w1,
+                    o.x[2] / w1,
+                    u0.map_or(f64::NAN, |u| eps_of(bn) * (o.x[0] / u).ln()),
+                    o.state.sigma.iter().fold(0.0f64, |a, s| a.max(s.abs())),
+                    t.elapsed()
+                );
+                (outer, w_prev, reached) = (o, w1, bn);
+            }
+            Ok(o) => {
+                println!("b* = {bn}: border constants {:?}", o.state.sigma);
+                break;
+            }
+            Err(e) => {
+                println!("b* = {bn}: {e}");
+                break;
+            }
+        }
+    }
+    assert!(reached <= 0.6, "{reached}");
+}
+
+/// The outer model on the ply (mu = 0.3, Q* = 0.6 mu P, Q = 0.9 Q*; docs/theory_tangential.md
+/// section 20), started from section 19's width laws 1 + e2 = 0.08 w1*, a1 = c1* + 0.05 w1*,
+/// 1 - a2 = 0.9 w1*: levels 3-5, the ends, the border constants, the residuals between
+/// collocation points, the slip signs in the leading zone and the trailing zone, and the
+/// outer field's first zero of q + mu p below e2.
+#[test]
+#[ignore = "slow: about 15 s, the ply's loaded state and three levels"]
+fn outer_model_on_the_ply() {
+    let k = ply();
+    let q_star = 0.6 * k.mu;
+    let qp = 0.9 * q_star;
+    let m = monotonic(&k, q_star, 1e-10, 1e-8).unwrap();
+    let w1 = m.stick_set().0;
+    let mut x = [0.08 * w1, 1.05 * w1, 0.9 * w1];
+    println!("w1* = {w1:.6e}; start {x:?}");
+    let mut jac = None;
+    let mut prev: Option<corner::OuterEnds> = None;
+    for level in 3..=5 {
+        let t = std::time::Instant::now();
+        let o = corner::outer_level(&m, x, qp, level, 1e-10, &mut jac).unwrap();
+        let apart = prev.map(|p| {
+            (0..3)
+                .map(|i| ((o.x[i] - p[i]) / p[i]).abs())
+                .fold(0.0, f64::max)
+        });
+        let u0 = corner::first_zero(&o.state, k.mu, 0.5 * o.x[0], 0.95);
+        println!(
+            "level {level}: 1 + e2 = {:.10e}, 1 + a1 = {:.10e}, 1 - a2 = {:.10e}; e2/w1* = {:.4}, \
+             (a1 - c1*)/w1* = {:.4}, (1 - a2)/w1* = {:.4}; step {:.1e}, sigma {:?}, relative \
+             change {apart:?}, u0 = {u0:?}, {} columns, {:?}",
+            o.x[0],
+            o.x[1],
+            o.x[2],
+            o.x[0] / w1,
+            (o.x[1] - w1) / w1,
+            o.x[2] / w1,
+            o.step,
+            o.state.sigma,
+            o.state.frame.len(),
+            t.elapsed()
+        );
+        if level == 3 {
+            let res = o
+                .state
+                .residual_between_points(&|a: f64, b: f64| m.forcing(a, b));
+            println!("residual between points {res:.1e}");
+            let [e2, wa, w2] = o.x;
+            for f in [1e-6, 1e-3, 0.1, 0.5, 0.9] {
+                let lead = corner::slip_left(&o.state, &m, e2 + f * (wa - e2), e2);
+                println!("fraction {f}: slip in the leading zone {lead:.4e}");
+            }
+            let _ = w2;
+        }
+        prev = Some(o.x);
+        x = o.x;
+    }
+}
