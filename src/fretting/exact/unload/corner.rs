@@ -196,8 +196,8 @@ pub(crate) type OuterEnds = [f64; 3];
 /// zone's end), so each power gains a factor INNER; the rest of the layer is a stick zone.
 pub(crate) const INNER: f64 = 0.05;
 
-/// The bonded powers at level l: 3 + l (10 at most), so that INNER^(3 + l) is 8e-10 at
-/// level 3 and 2e-12 at level 5.
+/// The bonded powers at level l: 3 + l (10 at most), so that INNER^(3 + l) is 1.6e-8 at
+/// level 3 and 3.9e-11 at level 5.
 pub(crate) fn outer_powers(level: usize) -> usize {
     (3 + level).min(10)
 }
@@ -270,7 +270,65 @@ pub(crate) fn outer_fixed<D: Start + ?Sized>(
 pub(crate) struct OuterLevel {
     pub(crate) x: OuterEnds,
     pub(crate) state: Solved,
+    /// The last Newton step's largest move of an end, relative to that end's offset.
     pub(crate) step: f64,
+    pub(crate) solves: usize,
+}
+
+/// A ladder's rung: the trace shows 1 + e2 and 1 - a2; the change sums all three ends; the
+/// step is made absolute by the largest end (an upper bound of every end's move).
+impl super::super::Rung for OuterLevel {
+    fn unknowns(&self) -> (f64, f64) {
+        (self.x[0], self.x[2])
+    }
+    fn moved(&self, before: &Self) -> f64 {
+        (0..3).map(|i| (self.x[i] - before.x[i]).abs()).sum()
+    }
+    fn step(&self) -> f64 {
+        self.step * self.x.iter().fold(0.0f64, |a, v| a.max(*v))
+    }
+    fn state(&self) -> &Solved {
+        &self.state
+    }
+    fn solves(&self) -> usize {
+        self.solves
+    }
+}
+
+/// The outer model at Q/P = `qp` from the ends `start`, by the ladder of levels `first`,
+/// `first` + 1, ... (section 11's, [`super::super::ladder`]) until two levels agree to `tol`
+/// in the ends and `traction_tol` in the tractions; the Jacobian is kept between levels.
+pub(crate) fn outer<D: Start + ?Sized>(
+    m: &D,
+    qp: f64,
+    tol: f64,
+    traction_tol: f64,
+    start: OuterEnds,
+    first: usize,
+) -> Result<super::super::Climbed<OuterLevel>> {
+    let g = edge_exponent(m.coupling());
+    let mut jac = None;
+    super::super::ladder(
+        g,
+        first,
+        tol,
+        traction_tol,
+        0,
+        |level, prev: Option<&OuterLevel>| {
+            let x0 = prev.map_or(start, |p| p.x);
+            outer_level(m, x0, qp, level, 0.1 * tol, &mut jac)
+        },
+    )?
+    .map_err(|trace| {
+        let last = trace.last().map_or((f64::NAN, f64::NAN), |t| (t.3, t.4));
+        Error::NoConvergence(format!(
+            "exact corner (outer): levels {first}-{} did not agree to {tol:e} (ends) and \
+             {traction_tol:e} (tractions): the last two moved them by {:e} and {:e}",
+            super::super::MAX_LEVEL,
+            last.0,
+            last.1
+        ))
+    })
 }
 
 /// The three border constants' root in the logarithms of the ends from `x0` (the chord
@@ -286,6 +344,7 @@ pub(crate) fn outer_level<D: Start + ?Sized>(
 ) -> Result<OuterLevel> {
     let mut lx = x0.map(f64::ln);
     let mut restarts = 0;
+    let mut solves = 0;
     loop {
         let (next, state, step) = chord(
             lx,
@@ -293,7 +352,10 @@ pub(crate) fn outer_level<D: Start + ?Sized>(
             tol,
             super::MAX_NEWTON,
             jac,
-            |lx: OuterEnds| outer_fixed(m, lx.map(f64::exp), qp, level),
+            |lx: OuterEnds| {
+                solves += 1;
+                outer_fixed(m, lx.map(f64::exp), qp, level)
+            },
             |s: &Solved| [s.sigma[0], s.sigma[1], s.sigma[2]],
             |lx: OuterEnds, d: OuterEnds| {
                 let big = d.iter().fold(0.0f64, |a, v| a.max(v.abs()));
@@ -307,6 +369,7 @@ pub(crate) fn outer_level<D: Start + ?Sized>(
                 x: lx.map(f64::exp),
                 state,
                 step,
+                solves,
             });
         }
         restarts += 1;
