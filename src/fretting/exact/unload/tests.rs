@@ -614,7 +614,8 @@ fn corner_start(k: &Coupling, n: usize, q_star: f64, qp: f64) -> corner::Ends {
 /// grid's start (N = 200): the border constants vanish; (U1), (U2) hold between collocation
 /// points, p > 0 and |q| <= mu p on both stick components; the corner zone and the leading
 /// zone slip forwards (slip since Q* > 0 where q = -mu p); and (C2): the leading zone's slip
-/// integrated from either of its stick ends agrees.
+/// integrated from either of its stick ends agrees; the outer model of section 20 from the
+/// five-zone ends reproduces them to within e1/e2.
 #[test]
 fn corner_structure_at_strong_coupling() {
     let k = strong();
@@ -671,6 +672,25 @@ fn corner_structure_at_strong_coupling() {
             "{from_e2:e} {from_a1:e}"
         );
     }
+    // the outer model (section 20) from these ends: its ends within e1/e2 (relatively) of
+    // the five-zone ones (measured: 0.51 e1/e2 for e2, 0.003 e1/e2 for a1 and a2)
+    let t = std::time::Instant::now();
+    let o = corner::outer_level(&m, [e2, wa, w2], qp, 3, 1e-10, &mut None).unwrap();
+    let rel: Vec<f64> = [e2, wa, w2]
+        .iter()
+        .zip(o.x)
+        .map(|(f, x)| (x - f) / f)
+        .collect();
+    println!(
+        "outer model: ends {:?}, relative to the five-zone {rel:?}, e1/e2 = {:.3e}, \
+         sigma {:?}, {:?}",
+        o.x,
+        e1 / e2,
+        o.state.sigma,
+        t.elapsed()
+    );
+    assert!(o.state.sigma.iter().all(|s| s.abs() < 1e-7));
+    assert!(rel.iter().all(|r| r.abs() < e1 / e2), "{rel:?}");
 }
 
 /// The corner structure at strong coupling against the grid LCP history under refinement
