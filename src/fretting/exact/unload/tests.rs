@@ -1126,3 +1126,49 @@ fn outer_model_on_the_ply() {
         assert!(lead > 0.0 && trail < 0.0);
     }
 }
+
+/// The outer model down the ply's first unloading branch (mu = 0.3, Q* = 0.6 mu P) from
+/// 0.9 Q* to -0.47 Q*, level 4, each load from the one before (the first from the width
+/// laws; docs/theory_tangential.md section 20): prints the ends, the border constants, the
+/// slips, the layer's margin and the outer field's first zero; asserts the stick set's
+/// two constants below 1e-7, the leading zone slipping forwards and the trailing zone
+/// backwards, q + mu p > 0 at e2/2, the layer shrinking and the leading zone growing.
+#[test]
+#[ignore = "slow: about 100 s, thirteen loads at level 4"]
+fn outer_model_down_the_ply_branch() {
+    let k = ply();
+    let q_star = 0.6 * k.mu;
+    let m = monotonic(&k, q_star, 1e-10, 1e-8).unwrap();
+    let w1 = m.stick_set().0;
+    let mut x = [0.08 * w1, 1.05 * w1, 0.9 * w1];
+    for frac in [
+        0.9, 0.7, 0.5, 0.3, 0.1, 0.0, -0.2, -0.3, -0.4, -0.45, -0.46, -0.47,
+    ] {
+        let qp = frac * q_star;
+        let t = std::time::Instant::now();
+        let o = corner::outer_level(&m, x, qp, 4, 1e-10, &mut None).unwrap();
+        let [e2, wa, w2] = o.x;
+        let lead: Vec<f64> = [1e-6, 1e-3, 0.1, 0.5, 0.9]
+            .iter()
+            .map(|f| corner::slip_left(&o.state, &m, e2 + f * (wa - e2), e2))
+            .collect();
+        let trail = corner::slip_left(&o.state, &m, 2.0 - 0.5 * w2, 2.0 - w2);
+        let top = 0.5 * e2;
+        let (p, q) = o.state.tractions(top, 2.0 - top);
+        let u0 = corner::first_zero(&o.state, k.mu, top, 0.95);
+        println!(
+            "Q/Q* = {frac}: 1 + e2 = {e2:.5e}, 1 + a1 = {wa:.6e}, 1 - a2 = {w2:.5e}; sigma \
+             {:?}; leading-zone slips {lead:?}, trailing {trail:.2e}; (q + mu p)/(mu p) at \
+             e2/2 {:.3e}; u0 {u0:?}; {:?}",
+            o.state.sigma,
+            (q + k.mu * p) / (k.mu * p),
+            t.elapsed()
+        );
+        assert!(o.state.sigma[1..].iter().all(|s| s.abs() < 1e-7));
+        assert!(lead.iter().all(|s| *s > 0.0) && trail < 0.0 && q + k.mu * p > 0.0);
+        if frac < 0.9 {
+            assert!(e2 < x[0] && wa > x[1]);
+        }
+        x = o.x;
+    }
+}
