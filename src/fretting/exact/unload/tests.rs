@@ -1131,7 +1131,7 @@ fn outer_model_on_the_ply() {
 /// 0.9 Q* to -0.47 Q*, level 4, each load from the one before (the first from the width
 /// laws; docs/theory_tangential.md section 20): prints the ends, the border constants, the
 /// slips, the layer's margin and the outer field's first zero; asserts the stick set's
-/// two constants below 1e-7, the leading zone slipping forwards and the trailing zone
+/// two constants below 1e-7 and the layer's below 1e-6 of bq p at e2/2, the leading zone slipping forwards and the trailing zone
 /// backwards, q + mu p > 0 at e2/2, the layer shrinking and the leading zone growing.
 #[test]
 #[ignore = "slow: about 100 s, thirteen loads at level 4"]
@@ -1159,12 +1159,16 @@ fn outer_model_down_the_ply_branch() {
         println!(
             "Q/Q* = {frac}: 1 + e2 = {e2:.5e}, 1 + a1 = {wa:.6e}, 1 - a2 = {w2:.5e}; sigma \
              {:?}; leading-zone slips {lead:?}, trailing {trail:.2e}; (q + mu p)/(mu p) at \
-             e2/2 {:.3e}; u0 {u0:?}; {:?}",
+             e2/2 {:.3e}; u0 {u0:?}; p at e2/2 {p:.4e}, the layer's constant over bq p there \
+             {:.1e}; {:?}",
             o.state.sigma,
             (q + k.mu * p) / (k.mu * p),
+            o.state.sigma[0] / (k.bq * p),
             t.elapsed()
         );
         assert!(o.state.sigma[1..].iter().all(|s| s.abs() < 1e-7));
+        // the layer's constant against the size of its rows' terms (bq p ~ u^(-g) there)
+        assert!(o.state.sigma[0].abs() < 1e-6 * k.bq * p);
         assert!(lead.iter().all(|s| *s > 0.0) && trail < 0.0 && q + k.mu * p > 0.0);
         if frac < 0.9 {
             assert!(e2 < x[0] && wa > x[1]);
