@@ -194,6 +194,11 @@ pub(crate) type OuterEnds = [f64; 3];
 /// The corner zone's share of the layer: (-1, -1 + INNER (1 + e2)) carries the loaded edge
 /// state and the bonded powers, whose analytic factor is singular first at e2 (the slip
 /// zone's end), so each power gains a factor INNER; the rest of the layer is a stick zone.
+/// INNER must stay below 1/11: the leading zone's first pole lies a tenth of its
+/// neighbour's length (1 - INNER)(1 + e2) beyond e2, at 1 + x = (1.1 INNER - 0.1)(1 + e2),
+/// which must be beyond the corner (at INNER = 0.1 it fell on a collocation point: NaN).
+/// Measured against INNER = 0.02 (docs/theory_tangential.md section 20): the ends at
+/// b* = 0.9 (level 3) within 1e-8, on the ply (ladder) within 1e-12.
 pub(crate) const INNER: f64 = 0.05;
 
 /// The bonded powers at level l: 3 + l (10 at most), so that INNER^(3 + l) is 1.6e-8 at
