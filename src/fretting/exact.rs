@@ -459,6 +459,11 @@ pub(crate) const SAFETY: f64 = 2.0;
 /// Newton step's size in them (its own error bound), its state and its fixed-geometry solves.
 pub(crate) trait Rung {
     fn unknowns(&self) -> (f64, f64);
+    /// The unknowns' change from the level `before` (the sum over them).
+    fn moved(&self, before: &Self) -> f64 {
+        let ((a0, a1), (b0, b1)) = (self.unknowns(), before.unknowns());
+        (a1 - b1).abs() + (a0 - b0).abs()
+    }
     fn step(&self) -> f64;
     fn state(&self) -> &Solved;
     fn solves(&self) -> usize;
@@ -513,8 +518,8 @@ pub(crate) fn ladder<L: Rung>(
         let l = solve(level, prev.as_ref())?;
         solves += l.solves();
         if let Some(p) = &prev {
-            let ((a0, a1), (b0, b1)) = (l.unknowns(), p.unknowns());
-            let dc = (a1 - b1).abs() + (a0 - b0).abs() + l.step() + p.step();
+            let (a0, a1) = l.unknowns();
+            let dc = l.moved(p) + l.step() + p.step();
             let dt = distance(g, l.state(), p.state());
             let (c_error, traction_error) = (SAFETY * dc, SAFETY * dt);
             trace.push((level, a0, a1, dc, dt, l.solves()));

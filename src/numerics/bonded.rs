@@ -218,6 +218,42 @@ impl Bonded {
         }
     }
 
+    /// The full finite Hilbert transforms over [c, 1] of the powers (1 - x)^(a + m),
+    /// m < `out.len()` (at most the powers the Taylor rows carry: `degree` plus the terms
+    /// for w), at the point y given by 1 - y > 0 and c - y (inside the zone when negative,
+    /// where the singular part -cot(pi a) (1 - y)^(a + m) = -i b (1 - y)^(a + m) is
+    /// included). Only w = 1 - c enters, so c itself may be rounded.
+    pub(crate) fn end_powers(&self, omy: f64, cmy: f64, out: &mut [C64]) {
+        assert!(out.len() <= self.powers, "at most {} powers", self.powers);
+        let z = self.w / omy;
+        let u = cmy / omy;
+        let middle = z > Z_SERIES && z < Z_INVERSE;
+        let at = Offsets {
+            omy,
+            z,
+            u,
+            ln_u: if middle { u.abs().ln() } else { 0.0 },
+            pow_a: if middle {
+                (C64::new(-0.5, -self.eps) * omy.ln()).exp()
+            } else {
+                C64::new(0.0, 0.0)
+            },
+            inside: cmy < 0.0,
+        };
+        let a = C64::new(-0.5, -self.eps);
+        for (m, o) in out.iter_mut().enumerate() {
+            *o = self.power_transform(m, &at);
+            if at.inside {
+                *o -= ((a + m as f64) * omy.ln()).exp() * C64::new(0.0, self.b);
+            }
+        }
+    }
+
+    /// Number of powers [`Bonded::end_powers`] can give.
+    pub(crate) fn powers(&self) -> usize {
+        self.powers
+    }
+
     /// 1 / (a + i).
     fn recip(&self, i: isize) -> C64 {
         self.recips[(i + MAX_TERMS as isize) as usize]
@@ -390,6 +426,63 @@ mod tests {
                     (got - want).norm() < 1e-12 * want.norm().max(1.0),
                     "{k}: {got} {want}"
                 );
+            }
+        }
+    }
+
+    /// int_0^top h(s) ds for h ~ s^(-1/2) at 0, as int_0^sqrt(top) h(v^2) 2 v dv (bounded).
+    fn from_zero(h: &dyn Fn(f64) -> C64, top: f64) -> C64 {
+        graded(&|v, _, _| h(v * v) * (2.0 * v), 0.0, top.sqrt())
+    }
+
+    /// The full transforms of the powers over a thin end zone [c, 1] (w = 1 - c), the
+    /// corner zone's columns (docs/theory_tangential.md section 20), against quadrature of
+    /// the Cauchy integral, at points inside (all three regimes of Z = w / (1 - y)) and
+    /// outside.
+    #[test]
+    fn end_powers_match_quadrature() {
+        for (b, w) in [(0.9, 1e-2), (0.2857, 6e-9)] {
+            let bx = Bonded::new(b, 1.0 - w, w, MAX_DEGREE);
+            let n = 10.min(bx.powers());
+            let a = C64::new(-0.5, -bx.eps);
+            for omy in [
+                1e-4 * w,
+                0.3 * w,
+                0.6 * w,
+                0.9 * w,
+                1.2 * w,
+                1.9 * w,
+                3.0 * w,
+                50.0 * w,
+            ] {
+                let cmy = omy - w;
+                let mut out = vec![C64::new(0.0, 0.0); n];
+                bx.end_powers(omy, cmy, &mut out);
+                for (m, got) in out.iter().enumerate() {
+                    // in s = 1 - t on (0, w): (1/pi) int s^(a + m) / (s - omy) ds
+                    let f = |s: f64| ((a + m as f64) * s.ln()).exp();
+                    let want = if cmy < 0.0 {
+                        let fy = f(omy);
+                        let g = |s: f64, _: f64, _: f64| {
+                            if s == omy {
+                                C64::new(0.0, 0.0)
+                            } else {
+                                (f(s) - fy) / (s - omy)
+                            }
+                        };
+                        (from_zero(&|s| g(s, 0.0, 0.0), omy)
+                            + graded(&g, omy, w)
+                            + fy * ((w - omy) / omy).ln())
+                            / PI
+                    } else {
+                        from_zero(&|s| f(s) / (s - omy), w) / PI
+                    };
+                    let scale = want.norm().max(f(omy).norm());
+                    assert!(
+                        (got - want).norm() < 1e-10 * scale,
+                        "b {b} w {w} 1 - y = {omy:e} m {m}: {got} vs {want}"
+                    );
+                }
             }
         }
     }

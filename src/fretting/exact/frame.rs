@@ -15,16 +15,37 @@
 //! (`spectral::basis::Block`, transforms in closed form by `numerics::jacobi_transform`).
 
 use crate::error::{Error, Result};
+use crate::numerics::bonded::{Bonded, MAX_DEGREE};
 use crate::numerics::jacobi_transform::{JacobiFamily, Point};
 use crate::numerics::lstsq::{ConstrainedFailure, constrained};
 use crate::problem::Coupling;
 use crate::spectral::basis::Block;
 
-/// Stick, or slip with q = s mu p.
+/// Stick, or slip with q = s mu p, or a stick zone at the contact's end x = -1 carrying a
+/// state on the friction bound q = -mu p plus the bonded increment (docs/theory_tangential.md
+/// section 20): its p families have q = -mu p built in (the loaded edge zone's p*, q*), and
+/// `n` complex powers (1 + x)^(-1/2 + i eps + j), j < n, of the increment
+/// dp + i dq / delta each add two columns (A = 1 and A = i).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) enum Kind {
     Stick,
     Slip(f64),
+    Corner(usize),
+}
+
+impl Kind {
+    /// The sign s of q = s mu p built into the zone's p families, if any.
+    fn tie(self) -> Option<f64> {
+        match self {
+            Kind::Stick => None,
+            Kind::Slip(s) => Some(s),
+            Kind::Corner(_) => Some(-1.0),
+        }
+    }
+
+    fn sticks(self) -> bool {
+        !matches!(self, Kind::Slip(_))
+    }
 }
 
 /// One zone: its kind, its length, its components' exponents at the two ends ([lo, hi];
@@ -77,9 +98,10 @@ struct Zone {
     omh: f64,
     /// Distances beyond the ends to the nearest singular point (None at the contact's ends).
     near: [Option<f64>; 2],
-    /// p blocks, then q blocks (stick only).
+    /// p blocks, then q blocks (stick only), then the bonded powers (corner only).
     p: Vec<Block>,
     q: Vec<Block>,
+    bonded: Option<Bonded>,
     start: usize,
     count: usize,
 }
@@ -90,6 +112,16 @@ pub(crate) struct Frame {
     pub(crate) k: Coupling,
     n: usize,
     scratch: usize,
+}
+
+type C64 = faer::complex::Complex<f64>;
+
+/// The bonded powers of a zone kind.
+fn bonded_powers(kind: Kind) -> usize {
+    match kind {
+        Kind::Corner(n) => n,
+        _ => 0,
+    }
 }
 
 fn log_spaced(lo: f64, hi: f64, n: usize) -> Vec<f64> {
@@ -162,7 +194,17 @@ impl Frame {
             } else {
                 Vec::new()
             };
-            let count: usize = p.iter().chain(&q).map(Block::len).sum();
+            let bonded = match s.kind {
+                Kind::Corner(n) => {
+                    assert!(i == 0, "a corner zone lies at x = -1");
+                    let b = Bonded::new((k.bp * k.bq).sqrt(), 1.0 - len, len, MAX_DEGREE);
+                    assert!(n <= b.powers(), "at most {} bonded powers", b.powers());
+                    Some(b)
+                }
+                _ => None,
+            };
+            let count: usize =
+                p.iter().chain(&q).map(Block::len).sum::<usize>() + 2 * bonded_powers(s.kind);
             scratch = scratch.max(p.iter().chain(&q).map(Block::scratch).max().unwrap_or(1));
             zones.push(Zone {
                 kind: s.kind,
@@ -172,6 +214,7 @@ impl Frame {
                 near,
                 p,
                 q,
+                bonded,
                 start,
                 count,
             });
@@ -203,7 +246,7 @@ impl Frame {
     pub(crate) fn stick_parts(&self) -> Vec<(usize, usize, f64, f64)> {
         let mut out: Vec<(usize, usize, f64, f64)> = Vec::new();
         for (i, z) in self.zones.iter().enumerate() {
-            if z.kind != Kind::Stick {
+            if !z.kind.sticks() {
                 continue;
             }
             match out.last_mut() {
@@ -258,7 +301,12 @@ impl Frame {
     }
 
     pub(crate) fn is_stick(&self, i: usize) -> bool {
-        self.zones[i].kind == Kind::Stick
+        self.zones[i].kind.sticks()
+    }
+
+    /// Whether zone i is a corner zone ([`Kind::Corner`]).
+    pub(crate) fn is_corner(&self, i: usize) -> bool {
+        matches!(self.zones[i].kind, Kind::Corner(_))
     }
 
     /// (1 + x, 1 - x) of a point.
@@ -304,6 +352,13 @@ impl Frame {
 
     /// The point mapped to zone j's variable t in [-1, 1] (outside for other zones).
     fn mapped(&self, l: &Loc, j: usize) -> Point {
+        let (xlo, hix) = self.rel(l, j);
+        let len = self.zones[j].len;
+        Point::offsets(2.0 * hix / len, 2.0 * xlo / len)
+    }
+
+    /// (x - lo, hi - x) of the point for zone j's ends, each to full relative accuracy.
+    fn rel(&self, l: &Loc, j: usize) -> (f64, f64) {
         let i = l.zone;
         let len = self.zones[j].len;
         let (xlo, hix) = if i == j {
@@ -315,7 +370,7 @@ impl Frame {
             let between: f64 = self.zones[i + 1..j].iter().map(|z| z.len).sum();
             (-(l.to_hi + between), l.to_hi + between + len)
         };
-        Point::offsets(2.0 * hix / len, 2.0 * xlo / len)
+        (xlo, hix)
     }
 
     /// The columns' p and q at a point of its zone (a zone end included, where no exponent
@@ -329,7 +384,7 @@ impl Frame {
         for b in &z.p {
             let n = b.len();
             b.values(t, buf, &mut pv[at..at + n]);
-            if let Kind::Slip(s) = z.kind {
+            if let Some(s) = z.kind.tie() {
                 for j in at..at + n {
                     qv[j] = s * self.k.mu * pv[j];
                 }
@@ -341,6 +396,37 @@ impl Frame {
             b.values(t, buf, &mut qv[at..at + n]);
             at += n;
         }
+        if let Kind::Corner(np) = z.kind {
+            // (u / len)^(beta + j), u = 1 + x = the offset from the zone's lower end -1
+            let beta = C64::new(-0.5, self.eps());
+            let s = l.from_lo / z.len;
+            let mut f = (beta * s.ln()).exp();
+            for _ in 0..np {
+                self.bonded_pair(f, f, &mut pv[at..at + 2], &mut qv[at..at + 2]);
+                f *= s;
+                at += 2;
+            }
+        }
+    }
+
+    /// eps = artanh(b*) / pi, b* = sqrt(bp bq), of the bonded field.
+    fn eps(&self) -> f64 {
+        (self.k.bp * self.k.bq).sqrt().atanh() / std::f64::consts::PI
+    }
+
+    /// The two real columns of a complex power phi of dp + i dq / delta (A = 1 and A = i),
+    /// from phi's value `vp` for p and `vq` for q (the same number for values; H[phi] for
+    /// both in transforms, H being real-linear): p = Re(A phi), q = delta Im(A phi).
+    fn bonded_pair(&self, vp: C64, vq: C64, p: &mut [f64], q: &mut [f64]) {
+        let delta = if self.k.bp > 0.0 {
+            (self.k.bq / self.k.bp).sqrt()
+        } else {
+            0.0
+        };
+        p[0] = vp.re;
+        q[0] = delta * vq.im;
+        p[1] = -vp.im;
+        q[1] = delta * vq.re;
     }
 
     /// The columns' H[p] and H[q] at a point (off the zone ends).
@@ -356,7 +442,7 @@ impl Frame {
                 for v in &mut hp[at..at + n] {
                     *v = -*v;
                 }
-                if let Kind::Slip(s) = z.kind {
+                if let Some(s) = z.kind.tie() {
                     for jj in at..at + n {
                         hq[jj] = s * self.k.mu * hp[jj];
                     }
@@ -371,6 +457,23 @@ impl Frame {
                 }
                 at += n;
             }
+            if let (Kind::Corner(np), Some(bx)) = (z.kind, &z.bonded) {
+                // H over [-1, -1 + len] of (1 + x)^(beta + m) at y is
+                // -conj(H over [1 - len, 1] of (1 - s)^(a + m) at -y), a = conj(beta)
+                // (the reflection s = -x); with 1 - (-y) = x - lo and c - (-y) = -(hi - x)
+                let (xlo, hix) = self.rel(l, j);
+                let mut h = vec![C64::new(0.0, 0.0); np];
+                bx.end_powers(xlo, -hix, &mut h);
+                // divided by len^(beta + m) = conj(len^(a + m))
+                let beta = C64::new(-0.5, self.eps());
+                let mut scale = (-beta * z.len.ln()).exp();
+                for hm in h.iter().take(np) {
+                    let v = -hm.conj() * scale;
+                    self.bonded_pair(v, v, &mut hp[at..at + 2], &mut hq[at..at + 2]);
+                    scale /= z.len;
+                    at += 2;
+                }
+            }
         }
     }
 
@@ -384,7 +487,7 @@ impl Frame {
                 b.integrals(&mut ip[at..at + n]);
                 for j in at..at + n {
                     ip[j] *= 0.5 * z.len;
-                    if let Kind::Slip(s) = z.kind {
+                    if let Some(s) = z.kind.tie() {
                         iq[j] = s * self.k.mu * ip[j];
                     }
                 }
@@ -397,6 +500,18 @@ impl Frame {
                     *v *= 0.5 * z.len;
                 }
                 at += n;
+            }
+            if let Kind::Corner(np) = z.kind {
+                // int over the zone of (u / len)^(beta + m) = len / (beta + m + 1)
+                let beta = C64::new(-0.5, self.eps());
+                for m in 0..np {
+                    let v = (beta + (m + 1) as f64).inv() * z.len;
+                    let (mut p2, mut q2) = ([0.0; 2], [0.0; 2]);
+                    self.bonded_pair(v, v, &mut p2, &mut q2);
+                    ip[at..at + 2].copy_from_slice(&p2);
+                    iq[at..at + 2].copy_from_slice(&q2);
+                    at += 2;
+                }
             }
         }
         (ip, iq)
@@ -567,7 +682,26 @@ pub(crate) fn solve_parts(
     // the stick set's components (maximal runs of stick zones), each [lo, hi] as offsets
     // (1 + lo, 1 - hi), with its first and last zone
     let parts = frame.stick_parts();
-    let cols = n + n_sigma * parts.len().max(1);
+    // a component that begins with a corner zone reaches x = -1 with the bonded field's
+    // singularity allowed there: one border constant (bounded at its upper end only,
+    // docs/theory_tangential.md section 20)
+    let per_part: Vec<usize> = parts
+        .iter()
+        .map(|&(a, ..)| if frame.is_corner(a) { 1 } else { n_sigma })
+        .collect();
+    let first: Vec<usize> = per_part
+        .iter()
+        .scan(n, |acc, &m| {
+            let at = *acc;
+            *acc += m;
+            Some(at)
+        })
+        .collect();
+    let cols = n + if parts.is_empty() {
+        n_sigma
+    } else {
+        per_part.iter().sum()
+    };
     let pts = frame.collocation(POINTS_PER_COLUMN, CLUSTER_DENSITY * sizes.per_decade);
     let g = 0.5 - (k.bp * k.mu).atan() / std::f64::consts::PI;
     let mut rows: Vec<Vec<f64>> = Vec::new();
@@ -595,9 +729,9 @@ pub(crate) fn solve_parts(
                 .position(|&(a, b, _, _)| l.zone >= a && l.zone <= b)
                 .unwrap_or(0);
             let (_, _, lo, hi) = parts[c];
-            let at = n + n_sigma * c;
+            let at = first[c];
             row[at] = -w;
-            if n_sigma > 1 {
+            if per_part[c] > 1 {
                 let tau = (opx - lo - (omx - hi)) / (2.0 - lo - hi);
                 row[at + 1] = -w * tau;
             }
@@ -722,7 +856,8 @@ impl Solved {
     /// The largest residual of H[p] = bp q, relative to bp mu p (to p when bp = 0), and of the
     /// stick rows H[q] + bq p = forcing(1 + x, 1 - x), relative to bq p, at 37 points per zone
     /// midway between Chebyshev points (the checks of docs/theory_tangential.md sections 12,
-    /// 14 and 15); asserts p > 0 at every point and |q| <= mu p on the stick zones.
+    /// 14 and 15); asserts p > 0 at every point and |q| <= mu p on the stick zones (not on a
+    /// corner zone, whose outer field holds only above its inner region).
     #[cfg(test)]
     pub(crate) fn residual_between_points(&self, forcing: &dyn Fn(f64, f64) -> f64) -> f64 {
         let (f, k) = (&self.frame, &self.frame.k);
@@ -745,9 +880,13 @@ impl Solved {
                 if f.is_stick(zone) {
                     let r2 = hq + k.bq * p - forcing(opx, omx);
                     worst = worst.max(r2.abs() / (k.bq * p));
-                    assert!(q.abs() <= k.mu * p * (1.0 + 1e-9), "|q| > mu p at {opx}");
+                    // a corner zone's outer field holds only above its inner region
+                    // (docs/theory_tangential.md section 20)
+                    if !f.is_corner(zone) {
+                        assert!(q.abs() <= k.mu * p * (1.0 + 1e-9), "|q| > mu p at {opx}");
+                    }
                 }
-                assert!(p > 0.0, "p = {p} at 1 + x = {opx}");
+                assert!(p > 0.0 || f.is_corner(zone), "p = {p} at 1 + x = {opx}");
             }
         }
         worst

@@ -22,7 +22,8 @@
 //! 200, 400, 800) that this three-zone pattern omits, and early in the branch the ply's
 //! corner has that structure on the scale of 1e-6; [`Unloading::admissible`] refuses an
 //! answer whose leading zone slips backwards there. The five-zone pattern of that corner
-//! (section 19) is solved at fixed level by [`corner`], not yet routed here.
+//! (section 19) is solved at fixed level by [`corner`], as is its outer model without the
+//! corner zone (section 20); neither is routed here yet.
 
 pub(crate) mod corner;
 #[cfg(test)]

@@ -7,6 +7,12 @@
 //! with (U1)-(U4) on it, the two stick components each with its two border constants, and
 //! (C2): both components move with the punch, so the slip since Q* returns to zero across
 //! the leading zone. Four ends, four border constants, a root in their logarithms.
+//!
+//! The outer model (section 20) drops the corner zone, exponentially thinner than the
+//! layer: the layer reaches the corner carrying the bonded increment u^(-1/2 + i eps) B(u)
+//! with B(0) free ([`Kind::Corner`]), one border constant on it and two on the stick set,
+//! three ends (e2, a1, a2); the corner zone sits near the outer field's first zero of
+//! q + mu p below e2 ([`first_zero`]).
 
 use super::super::W1_MIN;
 use super::super::edge_exponent;
@@ -178,4 +184,232 @@ pub(crate) fn slip_left<D: Start + ?Sized>(st: &Solved, m: &D, opx: f64, z: f64)
         }
     }
     sign * s
+}
+
+/// The outer model of the corner (docs/theory_tangential.md section 20): the ends
+/// 1 + e2, 1 + a1, 1 - a2, the stuck layer (-1, e2) reaching the corner with the bonded
+/// field's singularity there.
+pub(crate) type OuterEnds = [f64; 3];
+
+/// The corner zone's share of the layer: (-1, -1 + INNER (1 + e2)) carries the loaded edge
+/// state and the bonded powers, whose analytic factor is singular first at e2 (the slip
+/// zone's end), so each power gains a factor INNER; the rest of the layer is a stick zone.
+/// INNER must stay below 1/11: the leading zone's first pole lies a tenth of its
+/// neighbour's length (1 - INNER)(1 + e2) beyond e2, at 1 + x = (1.1 INNER - 0.1)(1 + e2),
+/// which must be beyond the corner (at INNER = 0.1 it fell on a collocation point: NaN).
+/// Measured against INNER = 0.02 (docs/theory_tangential.md section 20): the ends at
+/// b* = 0.9 (level 3) within 1e-8, on the ply (ladder) within 1e-12.
+pub(crate) const INNER: f64 = 0.05;
+
+/// The bonded powers at level l: 3 + l (10 at most), so that INNER^(3 + l) is 1.6e-8 at
+/// level 3 and 3.9e-11 at level 5.
+pub(crate) fn outer_powers(level: usize) -> usize {
+    (3 + level).min(10)
+}
+
+/// The outer zones: the corner zone (loaded edge state with q = -mu p, exponent -g at -1,
+/// and the bonded powers), the rest of the layer (stick; {0} for p at both ends, q {0} at
+/// its lower end and {0, 1 - g} at e2), the leading zone ({0, 1 - g} at e2, {0, g} at a1),
+/// then the three-zone pattern's stick set and trailing zone ([`specs`]).
+fn outer_specs(k: &Coupling, kinks: &[super::Kink], x: OuterEnds, level: usize) -> Vec<ZoneSpec> {
+    let [e2, wa, w2] = x;
+    let g = edge_exponent(k);
+    let mut rest = specs(k, kinks, wa, Some(w2));
+    rest.remove(0);
+    let inner = INNER * e2;
+    let corner = ZoneSpec {
+        kind: Kind::Corner(outer_powers(level)),
+        len: inner,
+        p: [vec![-g], vec![0.0]],
+        q: [vec![], vec![]],
+        near: [None, None],
+    };
+    let layer = ZoneSpec {
+        kind: Kind::Stick,
+        len: e2 - inner,
+        p: [vec![0.0], vec![0.0]],
+        q: [vec![0.0], vec![0.0, 1.0 - g]],
+        near: [None, None],
+    };
+    let lead = ZoneSpec {
+        kind: Kind::Slip(-1.0),
+        len: wa - e2,
+        p: [vec![0.0, 1.0 - g], vec![0.0, g]],
+        q: [vec![], vec![]],
+        near: [None, None],
+    };
+    [corner, layer, lead].into_iter().chain(rest).collect()
+}
+
+/// The outer model's fixed-geometry solve at Q/P = `qp` from the state `m`: three border
+/// constants (one on the layer, two on the stick set) and (C2) across the leading zone.
+pub(crate) fn outer_fixed<D: Start + ?Sized>(
+    m: &D,
+    x: OuterEnds,
+    qp: f64,
+    level: usize,
+) -> Result<Solved> {
+    let k = m.coupling();
+    let [e2, wa, w2] = x;
+    if !(0.0 < e2 && e2 < wa && w2 > 0.0 && wa + w2 < 2.0) {
+        return Err(Error::InvalidArgument(format!(
+            "exact corner (outer): ends out of order (1 + e2 = {e2:e}, 1 + a1 = {wa:e}, \
+             1 - a2 = {w2:e})"
+        )));
+    }
+    let kinks = m.kinks();
+    let cuts: Vec<f64> = kinks.iter().map(|c| c.opx).collect();
+    let forcing = |opx: f64, omx: f64| m.forcing(opx, omx);
+    solve_parts(
+        *k,
+        &outer_specs(k, &kinks, x, level),
+        Sizes::at(level),
+        2,
+        qp,
+        &forcing,
+        &cuts,
+    )
+}
+
+/// The outer model at one level.
+pub(crate) struct OuterLevel {
+    pub(crate) x: OuterEnds,
+    pub(crate) state: Solved,
+    /// The last Newton step's largest move of an end, relative to that end's offset.
+    pub(crate) step: f64,
+    pub(crate) solves: usize,
+}
+
+/// A ladder's rung: the trace shows 1 + e2 and 1 - a2; the change sums all three ends; the
+/// step is made absolute by the largest end (an upper bound of every end's move).
+impl super::super::Rung for OuterLevel {
+    fn unknowns(&self) -> (f64, f64) {
+        (self.x[0], self.x[2])
+    }
+    fn moved(&self, before: &Self) -> f64 {
+        (0..3).map(|i| (self.x[i] - before.x[i]).abs()).sum()
+    }
+    fn step(&self) -> f64 {
+        self.step * self.x.iter().fold(0.0f64, |a, v| a.max(*v))
+    }
+    fn state(&self) -> &Solved {
+        &self.state
+    }
+    fn solves(&self) -> usize {
+        self.solves
+    }
+}
+
+/// The outer model at Q/P = `qp` from the ends `start`, by the ladder of levels `first`,
+/// `first` + 1, ... (section 11's, [`super::super::ladder`]) until two levels agree to `tol`
+/// in the ends and `traction_tol` in the tractions; the Jacobian is kept between levels.
+pub(crate) fn outer<D: Start + ?Sized>(
+    m: &D,
+    qp: f64,
+    tol: f64,
+    traction_tol: f64,
+    start: OuterEnds,
+    first: usize,
+) -> Result<super::super::Climbed<OuterLevel>> {
+    let g = edge_exponent(m.coupling());
+    let mut jac = None;
+    super::super::ladder(
+        g,
+        first,
+        tol,
+        traction_tol,
+        0,
+        |level, prev: Option<&OuterLevel>| {
+            let x0 = prev.map_or(start, |p| p.x);
+            outer_level(m, x0, qp, level, 0.1 * tol, &mut jac)
+        },
+    )?
+    .map_err(|trace| {
+        let last = trace.last().map_or((f64::NAN, f64::NAN), |t| (t.3, t.4));
+        Error::NoConvergence(format!(
+            "exact corner (outer): levels {first}-{} did not agree to {tol:e} (ends) and \
+             {traction_tol:e} (tractions): the last two moved them by {:e} and {:e}",
+            super::super::MAX_LEVEL,
+            last.0,
+            last.1
+        ))
+    })
+}
+
+/// The three border constants' root in the logarithms of the ends from `x0` (the chord
+/// method as [`corner_level`]). No floor on the widths: the corner zone's columns carry the
+/// structure at -1 in closed form, and at the ply it is 8e-9 wide under a 1.6e-7 layer.
+pub(crate) fn outer_level<D: Start + ?Sized>(
+    m: &D,
+    x0: OuterEnds,
+    qp: f64,
+    level: usize,
+    tol: f64,
+    jac: &mut Option<[[f64; 3]; 3]>,
+) -> Result<OuterLevel> {
+    let mut lx = x0.map(f64::ln);
+    let mut restarts = 0;
+    let mut solves = 0;
+    loop {
+        let (next, state, step) = chord(
+            lx,
+            [1e-3; 3],
+            tol,
+            super::MAX_NEWTON,
+            jac,
+            |lx: OuterEnds| {
+                solves += 1;
+                outer_fixed(m, lx.map(f64::exp), qp, level)
+            },
+            |s: &Solved| [s.sigma[0], s.sigma[1], s.sigma[2]],
+            |lx: OuterEnds, d: OuterEnds| {
+                let big = d.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+                let damp = (std::f64::consts::LN_2 / big).min(1.0);
+                Ok((std::array::from_fn(|i| lx[i] + damp * d[i]), big))
+            },
+        )?;
+        lx = next;
+        if step <= tol.max(RESTART_ABOVE) || restarts == RESTARTS {
+            return Ok(OuterLevel {
+                x: lx.map(f64::exp),
+                state,
+                step,
+                solves,
+            });
+        }
+        restarts += 1;
+        *jac = None;
+    }
+}
+
+/// The outer solution's q + mu p = Re((mu - i delta) f) on the corner zone's side of the
+/// layer, and where it first vanishes below e2: scanning 1 + x down from the corner zone's
+/// top by factors `ratio`, the last point above the first sign change, refined by
+/// bisection in ln(1 + x) (None if it keeps its sign down to 1e-300).
+pub(crate) fn first_zero(st: &Solved, mu: f64, top: f64, ratio: f64) -> Option<f64> {
+    let f = |o: f64| {
+        let (p, q) = st.tractions(o, 2.0 - o);
+        q + mu * p
+    };
+    let (mut hi, mut fhi) = (top, f(top));
+    let mut lo = hi * ratio;
+    while lo > 1e-300 {
+        let flo = f(lo);
+        if flo.signum() != fhi.signum() {
+            for _ in 0..60 {
+                let mid = (lo * hi).sqrt();
+                let fm = f(mid);
+                if fm.signum() == fhi.signum() {
+                    hi = mid;
+                    fhi = fm;
+                } else {
+                    lo = mid;
+                }
+            }
+            return Some((lo * hi).sqrt());
+        }
+        (hi, fhi) = (lo, flo);
+        lo *= ratio;
+    }
+    None
 }
