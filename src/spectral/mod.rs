@@ -471,9 +471,23 @@ const RATE_PER_C: (f64, f64) = (55.0, 70.0);
 /// at c < 1e-8 whatever c, up to 3700 times [`RATE_PER_C`]'s bound (b* = 0.95,
 /// c = 1.3e-11: 2.65e-6): level 1's own change over the step rather than the tractions'
 /// (measured the same way at level 3, at most 4.1 times that bound). The largest anywhere
-/// below 4e-5 were 3.6e-5 (p) and 4.5e-5 (q~). The floors are twice those, and lie below
-/// [`RATE_PER_C`]'s bound from c = 1.3e-6 up, so nothing changes above that.
-const RATE_FLOOR: (f64, f64) = (7.2e-5, 8.9e-5);
+/// below 4e-5 were 3.6e-5 (p) and 4.5e-5 (q~). Towards b* = 0.99 the move grows: on the
+/// 294 served points with c < 4e-5 of the 37 x 37 grid of `tests::sensitivity_bounds_hold`
+/// and of b* = 0.25 .. 0.99 (20 rows) by mu~ = 0.01 .. 1 (61 log-spaced), per band of b*
+/// (with the stick zone's cluster of `points::STICK_CLUSTER_FROM`):
+///
+/// | b* | points | p | q~ |
+/// |---|---|---|---|
+/// | 0.25 .. 0.95 | 248 | 2.1e-5 | 2.3e-5 |
+/// | 0.95 .. 0.97 | 18 | 4.2e-5 | 4.2e-5 |
+/// | 0.97 .. 0.98 | 6 | 4.8e-5 | 4.2e-5 |
+/// | 0.98 .. 0.99 | 22 | 2.45e-4 | 3.27e-4 |
+///
+/// The floors are twice the largest of each band, below b* = 0.98 and above (b* below,
+/// floors); below 0.98 they lie under [`RATE_PER_C`]'s bound from c = 1.8e-6 up, above it
+/// from c = 9.4e-6 up, so nothing changes above those.
+const RATE_FLOOR: [(f64, (f64, f64)); 2] =
+    [(0.98, (9.6e-5, 9.0e-5)), (f64::INFINITY, (4.9e-4, 6.6e-4))];
 
 /// The stick zones below which [`RATE_PER_C`] bounds the move per lc too.
 const SMALL_C: f64 = 0.01;
@@ -486,8 +500,12 @@ fn sensitivity_bounds(b: f64, c: f64, w: f64) -> ((f64, f64), (f64, f64)) {
         .find(|r| b < r.0)
         .unwrap_or(&SENSITIVITY_BOUNDS[SENSITIVITY_BOUNDS.len() - 1]);
     if c < SMALL_C {
-        p = p.min((RATE_PER_C.0 * c * w).max(RATE_FLOOR.0));
-        q = q.min((RATE_PER_C.1 * c * w).max(RATE_FLOOR.1));
+        let &(_, floor) = RATE_FLOOR
+            .iter()
+            .find(|r| b < r.0)
+            .unwrap_or(&RATE_FLOOR[RATE_FLOOR.len() - 1]);
+        p = p.min((RATE_PER_C.0 * c * w).max(floor.0));
+        q = q.min((RATE_PER_C.1 * c * w).max(floor.1));
     }
     ((p, q), by_sigma)
 }
