@@ -711,8 +711,8 @@ fn at_fixed_edge(
 const OFF_EDGE_PASSES: usize = 1;
 
 /// The first half level (level times 2) of [`at_fixed_edge`] at the traction tolerance: level
-/// 1.5 at 1e-8, half a level more per two decades below (level 2 at 1e-10) and less above,
-/// level 1 at the least. Measured on the 10 spectral scenes of `examples/spectral_timing.rs`
+/// 1.5 at 1e-8, half a level more per two decades below (level 2 at 1e-10), and level 1.5
+/// above as well ([`FIRST_HALF_LEVEL_MIN`]). Measured on the 10 spectral scenes of `examples/spectral_timing.rs`
 /// with the half-level ladder, the sum of n^3 over the levels solved (n unknowns; the QR's
 /// cost, and the assembly's grows like n^2) for the first level:
 ///
@@ -726,9 +726,25 @@ const OFF_EDGE_PASSES: usize = 1;
 fn first_half_level(traction_tol: f64, k: Constants, w: f64) -> usize {
     let decades = (1e-8 / traction_tol).log10();
     let late = if late_start(k, w) { 1.0 } else { 0.0 };
-    (3.0 + (0.5 * decades).round() + late).clamp(2.0 * FIRST_LEVEL as f64, 2.0 * MAX_LEVEL as f64)
-        as usize
+    (3.0 + (0.5 * decades).round() + late)
+        .clamp(FIRST_HALF_LEVEL_MIN as f64, 2.0 * MAX_LEVEL as f64) as usize
 }
+
+/// The lowest first half level of [`at_fixed_edge`], at loose tolerances: level 1.5, whose
+/// sparser points and slip degrees ([`system::Sizes`]) make it cheaper than level 1 with
+/// about as many unknowns (40-73 against 40-75 on the speed scenes) and far more accurate.
+/// Measured on the 10 spectral speed scenes (c to 1e-10; thread CPU time, the median over the
+/// scenes, alternated twice in one run; true error against the panels at (1e-13, 1e-11)):
+///
+/// | tractions to | from level 1 | from level 1.5 | largest true / estimate from 1.5 |
+/// |---|---|---|---|
+/// | 1e-6 | 0.177, 0.178 ms | 0.120, 0.119 ms | 0.060 |
+/// | 1e-4 | 0.179, 0.227 ms | 0.157, 0.124 ms | 0.060 |
+///
+/// (with c to 1e-6 and 1e-4 as well, the same ratios: every answer at level 1.5, estimates
+/// 1.6e-11 .. 2.0e-8). Before, a looser tolerance cost more than 1e-8
+/// (`examples/speed_accuracy`: 210 and 221 us at tol 1e-4 and 1e-6 against 141 us at 1e-8).
+const FIRST_HALF_LEVEL_MIN: usize = 3;
 
 /// Where [`at_fixed_edge`] starts half a level higher: 1 - c in [0.01, 0.2), or 1 - c >= 0.5
 /// at b* >= 0.75. On the 918 served nodes of a 53 x 53 grid of the table's coordinates at

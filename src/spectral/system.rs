@@ -175,8 +175,9 @@ const SLIP_DEGREES: [f64; 2] = [2.0, 0.0];
 /// levels above it, whose bounds (`SENSITIVITY_BOUNDS` in `spectral`) were measured with
 /// these sizes; with [`SLIP_DEGREES`] at level 1 too, the
 /// move per sigma measured there at b* = 0.262, mu~ = 11.2 rose to 1.51, past the band's bound
-/// of 1.4 (twice the largest measured, 0.69). It is also the level that answers alone at
-/// loose tolerances, where (2, 0) gained nothing (tractions to 1e-6: 0.226 against 0.226 ms).
+/// of 1.4 (twice the largest measured, 0.69). It was also the level that answered alone at
+/// loose tolerances, where (2, 0) gained nothing (tractions to 1e-6: 0.226 against 0.226 ms);
+/// since `FIRST_HALF_LEVEL_MIN` in `spectral` level 1.5 answers there.
 const DENSE_SLIP_DEGREES: [f64; 2] = [5.0, 3.0];
 
 /// Below this g the slip zone's second family is the difference quotient
@@ -553,9 +554,10 @@ const SLIP_POINTS: f64 = 1.0;
 
 /// Factor on [`STICK_POINTS`] and [`SLIP_POINTS`] above level 1 where g >= [`DENSE_BELOW_G`]
 /// (about 1.5 rows per unknown there; docs/theory_spectral.md (C1)). Level 1 keeps the full
-/// points: it answers alone at loose tolerances, where with halved points its traction
-/// estimate missed once (tests/auto.rs, ply at mu = 0.1 and 1e-4: error 7.2e-8 against an
-/// estimate of 6.6e-8). Measured, with the sparser points at every c (before
+/// points: it answered alone at loose tolerances (before `FIRST_HALF_LEVEL_MIN` in
+/// `spectral`), where with halved points its traction estimate missed once (tests/auto.rs,
+/// ply at mu = 0.1 and 1e-4: error 7.2e-8 against an estimate of 6.6e-8), and it measures
+/// the slope and the move per lc whose bounds were measured with these points. Measured, with the sparser points at every c (before
 /// [`DENSE_BELOW_C`]), on the 10 spectral scenes of the 12 speed scenes (thread CPU time,
 /// median over the scenes, the two alternated twice in one run):
 ///
