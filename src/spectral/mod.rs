@@ -260,6 +260,13 @@ pub(crate) fn serves_at(b: f64, mu: f64, lc: f64) -> bool {
     serves(Constants { b, mu, g }, lc)
 }
 
+/// Whether [`from_guess`] serves the reduced coupling (b*, mu~) near the stick edge lc: as
+/// [`serves_at`], and c >= [`GUESS_C_MIN`].
+#[cfg(test)]
+pub(crate) fn serves_from_guess_at(b: f64, mu: f64, lc: f64) -> bool {
+    serves_at(b, mu, lc) && StickEdge::from_logit(lc).c >= GUESS_C_MIN
+}
+
 /// sigma at lc for the level's sizes (fixed by the starting c, so that sigma(lc) is smooth).
 fn sigma_at(k: Constants, lc: f64, sizes: Sizes) -> Option<Level> {
     let (fixed, _) = solved_at(k, lc, sizes, false)?;
