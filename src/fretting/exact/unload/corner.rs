@@ -70,12 +70,23 @@ pub(crate) fn corner_fixed<D: Start + ?Sized>(
              {wa:e}, 1 - a2 = {w2:e})"
         )));
     }
+    solve_on_kinks(m, qp, level, |kinks| corner_specs(k, kinks, x))
+}
+
+/// The unloading's fixed-ends system on the zones `specs` builds from the loaded state's
+/// kinks, the kinks cutting the gap rows' rules and the loaded state as the forcing.
+fn solve_on_kinks<D: Start + ?Sized>(
+    m: &D,
+    qp: f64,
+    level: usize,
+    specs: impl FnOnce(&[super::Kink]) -> Vec<ZoneSpec>,
+) -> Result<Solved> {
     let kinks = m.kinks();
     let cuts: Vec<f64> = kinks.iter().map(|c| c.opx).collect();
     let forcing = |opx: f64, omx: f64| m.forcing(opx, omx);
     solve_parts(
-        *k,
-        &corner_specs(k, &kinks, x),
+        *m.coupling(),
+        &specs(&kinks),
         Sizes::at(level),
         2,
         qp,
@@ -257,18 +268,7 @@ pub(crate) fn outer_fixed<D: Start + ?Sized>(
              1 - a2 = {w2:e})"
         )));
     }
-    let kinks = m.kinks();
-    let cuts: Vec<f64> = kinks.iter().map(|c| c.opx).collect();
-    let forcing = |opx: f64, omx: f64| m.forcing(opx, omx);
-    solve_parts(
-        *k,
-        &outer_specs(k, &kinks, x, level),
-        Sizes::at(level),
-        2,
-        qp,
-        &forcing,
-        &cuts,
-    )
+    solve_on_kinks(m, qp, level, |kinks| outer_specs(k, kinks, x, level))
 }
 
 /// The outer model at one level.
