@@ -264,7 +264,13 @@ pub(crate) fn serves_at(b: f64, mu: f64, lc: f64) -> bool {
 /// [`serves_at`], and c >= [`GUESS_C_MIN`].
 #[cfg(test)]
 pub(crate) fn serves_from_guess_at(b: f64, mu: f64, lc: f64) -> bool {
-    serves_at(b, mu, lc) && StickEdge::from_logit(lc).c >= GUESS_C_MIN
+    let g = 0.5 - (b * mu).atan() / std::f64::consts::PI;
+    serves_from_guess(Constants { b, mu, g }, lc)
+}
+
+/// Whether [`from_guess`] serves the coupling near lc: [`serves`], and c >= [`GUESS_C_MIN`].
+fn serves_from_guess(k: Constants, lc: f64) -> bool {
+    serves(k, lc) && StickEdge::from_logit(lc).c >= GUESS_C_MIN
 }
 
 /// sigma at lc for the level's sizes (fixed by the starting c, so that sigma(lc) is smooth).
@@ -361,7 +367,7 @@ pub(crate) fn from_guess(
     }
     let at = |lc: f64| {
         let e = StickEdge::from_logit(lc);
-        (serves(k, lc) && e.c >= GUESS_C_MIN)
+        serves_from_guess(k, lc)
             .then(|| sigma_at(k, lc, Sizes::at(FIRST_LEVEL, e.c, e.one_minus_c)))
             .flatten()
     };
