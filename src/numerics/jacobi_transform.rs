@@ -24,7 +24,7 @@
 use std::f64::consts::PI;
 
 use super::orthopoly::{JacobiRecurrence, jacobi_mass};
-use super::special::{Hyp2f1, hyp2f1_series, tan_pi};
+use super::special::{Hyp2f1, SeriesRatios, tan_pi};
 
 /// A real point y with its offsets 1 - y and 1 + y, each to full relative accuracy.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -135,6 +135,8 @@ pub(crate) struct JacobiFamily {
 struct Ends {
     inside: Option<Hyp2f1>,
     outside: Hyp2f1,
+    /// Tricomi's 2F1(1, -a-b; 1-a; z) by its power series for z <= 1/2, built on first use.
+    series: std::sync::OnceLock<SeriesRatios>,
 }
 
 impl Ends {
@@ -155,7 +157,11 @@ impl Ends {
         } else {
             Hyp2f1::new(a + b + 1.0, a + 1.0, -a)
         };
-        Ends { inside, outside }
+        Ends {
+            inside,
+            outside,
+            series: std::sync::OnceLock::new(),
+        }
     }
 }
 
@@ -317,11 +323,13 @@ fn inside(a: f64, b: f64, mass: f64, ends: &Ends, p: Point) -> f64 {
     let f = if a + b == 0.0 {
         1.0
     } else if z <= 0.5 {
-        hyp2f1_series(1.0, -a - b, 1.0 - a, z)
+        ends.series
+            .get_or_init(|| SeriesRatios::new(1.0, -a - b, 1.0 - a))
+            .sum(z)
     } else {
         let h = ends.inside.as_ref();
         let h = h.unwrap_or_else(|| panic!("T_0 inside: exponents ({a}, {b}) not covered"));
-        let f = h.eval(z, omz, omz.ln()).0;
+        let f = h.value(z, omz, omz.ln());
         if b == 0.0 && a > 0.0 {
             // 2F1(1, -a; 1-a; z) = -a Phi(z, 1, -a) = 1 - a z / (1 - a) 2F1(1, 1-a; 2-a; z),
             // the last with exponent c - a - b = 0 and positive parameters
@@ -343,7 +351,7 @@ fn right_of(a: f64, mass: f64, ends: &Ends, p: Point) -> f64 {
     let zeta = 2.0 / p.opy;
     let omz = -p.omy / p.opy;
     let ln_omz = (-p.omy).ln() - p.opy.ln();
-    let f = ends.outside.eval(zeta, omz, ln_omz).0;
+    let f = ends.outside.value(zeta, omz, ln_omz);
     // for a < 0 Euler's (1 - zeta)^a 2F1(a+b+1, a+1; a+b+2; zeta), exponent -a in (0, 1)
     let f = if a >= 0.0 { f } else { (a * ln_omz).exp() * f };
     -mass / PI * f / p.opy

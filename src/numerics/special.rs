@@ -249,6 +249,8 @@ pub(crate) struct Hyp2f1 {
     b: f64,
     e: f64,
     near_one: std::sync::OnceLock<NearOne>,
+    /// The power series' term ratios without z ([`SeriesRatios`]), built on first use.
+    ratios: std::sync::OnceLock<SeriesRatios>,
     /// The terms of the expansion about z = 1 that do not depend on z, in chunks of
     /// [`CHUNK`] built on first use ([`Hyp2f1::near_one`]); boxed, so that the function stays
     /// small to move (the spectral bases hold about 20 of them).
@@ -295,6 +297,7 @@ impl Hyp2f1 {
             b,
             e,
             near_one: std::sync::OnceLock::new(),
+            ratios: std::sync::OnceLock::new(),
             chunks: Default::default(),
         }
     }
@@ -306,6 +309,22 @@ impl Hyp2f1 {
         } else {
             self.near_one(z, one_minus_z, ln_one_minus_z)
         }
+    }
+
+    /// F(z) alone: [`Hyp2f1::eval`]'s first part, to the bit, without the derivative's sums.
+    pub(crate) fn value(&self, z: f64, one_minus_z: f64, ln_one_minus_z: f64) -> f64 {
+        if z <= 0.5 {
+            self.series_ratios().sum(z)
+        } else {
+            self.near_one_sums::<false>(z, one_minus_z, ln_one_minus_z)
+                .0
+        }
+    }
+
+    /// The power series' term ratios, built on first use.
+    fn series_ratios(&self) -> &SeriesRatios {
+        self.ratios
+            .get_or_init(|| SeriesRatios::new(self.a, self.b, self.a + self.b + self.e))
     }
 
     /// (P, D) of the logarithmic case (e = 0) at z -> 1:
@@ -402,6 +421,12 @@ impl Hyp2f1 {
     /// e Q_n = expm1(e D_n) = A_n + B + A_n B, exact up to rounding of the size
     /// eps (|A_n| + |B|), so no transcendental function is left in the sum.
     fn near_one(&self, z: f64, w: f64, ln_w: f64) -> (f64, f64) {
+        self.near_one_sums::<true>(z, w, ln_w)
+    }
+
+    /// [`Hyp2f1::near_one`], with the derivative's sum only where `SLOPE` (else 0).
+    #[inline(always)]
+    fn near_one_sums<const SLOPE: bool>(&self, z: f64, w: f64, ln_w: f64) -> (f64, f64) {
         let e = self.e;
         debug_assert!(w >= 0.0 || e == 0.0, "z > 1 only in the logarithmic case");
         let k = self.constants();
@@ -417,7 +442,9 @@ impl Hyp2f1 {
                 let term = -t.r * wn * q;
                 sum += term;
                 let nf = (i * CHUNK + j) as f64;
-                slope += t.r * wn * ((nf + e) * q + 1.0);
+                if SLOPE {
+                    slope += t.r * wn * ((nf + e) * q + 1.0);
+                }
                 wn *= w;
                 if wn == 0.0 || (nf > 0.0 && term.abs() <= SERIES_TOL * sum.abs()) {
                     break 'chunks;
@@ -428,20 +455,51 @@ impl Hyp2f1 {
     }
 }
 
-/// 2F1(a, b; c; z) by its power series (DLMF 15.2.1) for any real a, b and c not a
-/// non-positive integer, |z| <= 1/2 (at most [`MAX_TERMS`] terms; about 55 at |z| = 1/2).
-pub(crate) fn hyp2f1_series(a: f64, b: f64, c: f64, z: f64) -> f64 {
-    debug_assert!(z.abs() <= 0.5 + 1e-12);
-    let (mut term, mut sum) = (1.0, 1.0);
-    for n in 0..MAX_TERMS {
-        let n = n as f64;
-        term *= (a + n) * (b + n) / ((c + n) * (n + 1.0)) * z;
-        sum += term;
-        if term.abs() <= SERIES_TOL * sum.abs() {
-            break;
+/// Terms of [`SeriesRatios`]' table: |z| <= 1/2 sums about 55-60.
+const RATIOS: usize = 64;
+
+/// The power series of 2F1(a, b; c; z) (DLMF 15.2.1) for fixed a, b, c not a non-positive
+/// integer, |z| <= 1/2 (at most [`MAX_TERMS`] terms; about 55 at |z| = 1/2): its term ratios
+/// without z, (a + n) (b + n) / ((c + n) (n + 1)), tabulated once, so that each sum costs one
+/// multiplication by z per term; the term is term (ratio z), as the series summed term by
+/// term computes it (beyond the table the ratios are computed in place).
+#[derive(Clone, Debug)]
+pub(crate) struct SeriesRatios {
+    a: f64,
+    b: f64,
+    c: f64,
+    ratios: Box<[f64; RATIOS]>,
+}
+
+impl SeriesRatios {
+    pub(crate) fn new(a: f64, b: f64, c: f64) -> Self {
+        let mut ratios = Box::new([0.0; RATIOS]);
+        for (n, r) in ratios.iter_mut().enumerate() {
+            let n = n as f64;
+            *r = (a + n) * (b + n) / ((c + n) * (n + 1.0));
         }
+        SeriesRatios { a, b, c, ratios }
     }
-    sum
+
+    /// The series at |z| <= 1/2.
+    pub(crate) fn sum(&self, z: f64) -> f64 {
+        let (mut term, mut sum) = (1.0, 1.0);
+        for n in 0..MAX_TERMS {
+            let r = match self.ratios.get(n) {
+                Some(&r) => r,
+                None => {
+                    let n = n as f64;
+                    (self.a + n) * (self.b + n) / ((self.c + n) * (n + 1.0))
+                }
+            };
+            term *= r * z;
+            sum += term;
+            if term.abs() <= SERIES_TOL * sum.abs() {
+                break;
+            }
+        }
+        sum
+    }
 }
 
 /// 2F1(a, b; a + b + e; z) alone (see [`Hyp2f1`]).
@@ -578,6 +636,51 @@ mod tests {
         assert!((digamma(0.5) - psi_half).abs() < 1e-15);
         assert!((digamma(0.1) + 10.423_754_940_411_076).abs() < 1e-13);
         assert!(rel(digamma(100.0), 4.600_161_852_738_087) < 1e-15);
+    }
+
+    #[test]
+    fn series_ratios_sum_as_the_series_term_by_term() {
+        // the series with each ratio computed in the term's update, as before the table
+        let direct = |a: f64, b: f64, c: f64, z: f64| {
+            let (mut term, mut sum) = (1.0, 1.0);
+            for n in 0..MAX_TERMS {
+                let n = n as f64;
+                term *= (a + n) * (b + n) / ((c + n) * (n + 1.0)) * z;
+                sum += term;
+                if term.abs() <= SERIES_TOL * sum.abs() {
+                    break;
+                }
+            }
+            sum
+        };
+        for (a, b, c) in [
+            (1.0, -0.6, 0.7),
+            (1.0, 0.3, 1.3),
+            (0.5, 0.5, 1.0),
+            (1.0, 0.999, 1.0),
+        ] {
+            let table = SeriesRatios::new(a, b, c);
+            for z in [-0.5, -0.1, 1e-9, 0.2, 0.4999, 0.5] {
+                assert_eq!(
+                    table.sum(z).to_bits(),
+                    direct(a, b, c, z).to_bits(),
+                    "{a} {b} {c} {z}"
+                );
+            }
+        }
+        // the value alone as eval's, through both expansions
+        for (a, b, e) in [(1.0, 0.4, 0.3), (0.7, 1.0, 0.0), (1.0, 1.2, 0.6)] {
+            let f = Hyp2f1::new(a, b, e);
+            for z in [0.1f64, 0.5, 0.6, 0.9, 0.999] {
+                let w = 1.0 - z;
+                let (v, _) = f.eval(z, w, w.ln());
+                assert_eq!(
+                    f.value(z, w, w.ln()).to_bits(),
+                    v.to_bits(),
+                    "{a} {b} {e} {z}"
+                );
+            }
+        }
     }
 
     #[test]
