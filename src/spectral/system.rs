@@ -14,7 +14,7 @@
 
 use crate::error::{Error, Result};
 use crate::numerics::jacobi_transform::{JacobiFamily, Point};
-use crate::numerics::lstsq::{ConstrainedFailure, constrained_nested, constrained_sized};
+use crate::numerics::lstsq::{ColMajor, ConstrainedFailure, constrained_nested, constrained_sized};
 
 use crate::numerics::bonded::{Bonded, MAX_DEGREE};
 use faer::complex::Complex;
@@ -672,8 +672,8 @@ pub(crate) fn solve_fixed_pair(
 /// three constraints in the scaled columns.
 pub(crate) struct Assembled {
     basis: Arc<Basis>,
-    /// Row-major, `basis.len() + 1` columns (the last one sigma's), scaled.
-    a: Vec<f64>,
+    /// `basis.len() + 1` columns (the last one sigma's), scaled.
+    a: ColMajor,
     rows: usize,
     scale: Vec<f64>,
     cons: Vec<(Vec<f64>, f64)>,
@@ -710,7 +710,7 @@ impl Assembled {
             ));
         }
         let rows = 2 * stick.len() + slip.len();
-        let mut a = vec![0.0; rows * cols];
+        let mut a = ColMajor::zeros(rows, cols);
         let (mut pv, mut qv, mut hp, mut hq) =
             (vec![0.0; n], vec![0.0; n], vec![0.0; n], vec![0.0; n]);
         let mut scratch = vec![0.0; basis.scratch_len()];
@@ -730,34 +730,25 @@ impl Assembled {
             let weight = pt.omx.powf(k.g);
             weights.push(weight);
             on_stick.push(stick_point);
-            let row = &mut a[r * cols..(r + 1) * cols];
             for j in 0..n {
-                row[j] = weight * (hp[j] - k.b * qv[j]);
+                *a.at_mut(r, j) = weight * (hp[j] - k.b * qv[j]);
             }
             r += 1;
             if stick_point {
-                let row = &mut a[r * cols..(r + 1) * cols];
                 for j in 0..n {
-                    row[j] = weight * (hq[j] + k.b * pv[j]);
+                    *a.at_mut(r, j) = weight * (hq[j] + k.b * pv[j]);
                 }
-                row[n] = -weight;
+                *a.at_mut(r, n) = -weight;
                 r += 1;
             }
         }
         // column scales
         let mut scale = vec![0.0; cols];
-        for row in a.chunks_exact(cols) {
-            for (s, v) in scale.iter_mut().zip(row) {
-                *s += v * v;
-            }
-        }
-        for s in &mut scale {
-            *s = if *s > 0.0 { 1.0 / s.sqrt() } else { 1.0 };
-        }
-        for row in a.chunks_exact_mut(cols) {
-            for (v, s) in row.iter_mut().zip(&scale) {
-                *v *= s;
-            }
+        for (j, s) in scale.iter_mut().enumerate() {
+            let col = a.col_mut(j);
+            let sum: f64 = col.iter().fold(0.0, |acc, v| acc + v * v);
+            *s = if sum > 0.0 { 1.0 / sum.sqrt() } else { 1.0 };
+            col.iter_mut().for_each(|v| *v *= *s);
         }
         // the constraints, in the scaled columns: int p = 1 (S3), and p and q continuous at
         // x = c (C2)
@@ -800,9 +791,9 @@ impl Assembled {
     }
 
     /// The least squares of `a` (this system's rows, in any order) under its constraints.
-    fn solve_matrix(&self, a: &[f64]) -> Result<Fixed> {
+    fn solve_matrix(&self, a: &ColMajor) -> Result<Fixed> {
         let cols = self.basis.len() + 1;
-        let x = constrained_sized(a, cols, &vec![0.0; self.rows], self.cons.clone(), cols - 1)
+        let x = constrained_sized(a, &vec![0.0; self.rows], self.cons.clone(), cols - 1)
             .map_err(|e| self.failure(e))?;
         Ok(self.fixed(x, true))
     }
@@ -817,12 +808,7 @@ impl Assembled {
     /// another rounding of the QR (docs/theory_spectral.md section 5, (S10)). The residual
     /// (R1) is taken on the rows as assembled.
     pub(crate) fn solve_rows(&self, order: &[usize]) -> Result<Fixed> {
-        let cols = self.basis.len() + 1;
-        let mut a = Vec::with_capacity(self.a.len());
-        for &i in order {
-            a.extend_from_slice(&self.a[i * cols..(i + 1) * cols]);
-        }
-        self.solve_matrix(&a)
+        self.solve_matrix(&self.a.rows_permuted(order))
     }
 
     /// The solutions on the coarser columns ([`Basis::coarse_columns`]) and on all, from one
@@ -838,17 +824,14 @@ impl Assembled {
             .chain((0..n).filter(|&j| !keep[j]))
             .collect();
         let inner = keep.iter().filter(|&&k| k).count() + 1;
-        let mut a = Vec::with_capacity(self.a.len());
-        for row in self.a.chunks_exact(cols) {
-            a.extend(order.iter().map(|&j| row[j]));
-        }
         let cons = self
             .cons
             .iter()
             .map(|(row, d)| (order.iter().map(|&j| row[j]).collect(), *d))
             .collect();
         // the constraints' pivots among the coarser coefficients
-        let (xi, xf) = constrained_nested(&a, cols, &vec![0.0; self.rows], cons, inner - 1, inner)
+        let zeros = vec![0.0; self.rows];
+        let (xi, xf) = constrained_nested(&self.a, &order, &zeros, cons, inner - 1, inner)
             .map_err(|e| self.failure(e))?;
         let back = |x: Vec<f64>| {
             let mut out = vec![0.0; cols];
@@ -897,7 +880,7 @@ impl Assembled {
     fn residual(&self, full: &[f64], coef: &[f64]) -> f64 {
         let k = self.basis.k;
         let n = self.basis.len();
-        let cols = n + 1;
+        let rows = self.a.times(full);
         let mut residual: f64 = 0.0;
         let mut r = 0;
         for (i, &stick_point) in self.on_stick.iter().enumerate() {
@@ -909,9 +892,7 @@ impl Assembled {
             let size = k.b * p * self.weights[i];
             for (eq, scale) in [(true, k.mu), (stick_point, 1.0)] {
                 if eq {
-                    let row = &self.a[r * cols..(r + 1) * cols];
-                    let res: f64 = row.iter().zip(full).map(|(a, x)| a * x).sum();
-                    residual = residual.max(res.abs() / (scale * size));
+                    residual = residual.max(rows[r].abs() / (scale * size));
                     r += 1;
                 }
             }
