@@ -229,6 +229,13 @@ impl JacobiFamily {
 
     /// T_0(y) (module documentation), y off the interval ends.
     pub(crate) fn t0(&self, p: Point) -> f64 {
+        self.t0_with(p, None)
+    }
+
+    /// [`JacobiFamily::t0`] with the weight's factors at y in (-1, 1), (1 - y)^a and
+    /// (1 + y)^b as [`JacobiFamily::weight_factors`] gives them, where the caller has them
+    /// (the same value to the bit).
+    pub(crate) fn t0_with(&self, p: Point, factors: Option<(f64, f64)>) -> f64 {
         let (a, b, mass) = (self.a, self.b, self.mass);
         if a == 0.0 && b == 0.0 {
             return (p.omy.abs() / p.opy.abs()).ln() / PI;
@@ -236,10 +243,11 @@ impl JacobiFamily {
         let [own, swapped] = &self.ends;
         if p.inside() {
             // Tricomi's form needs a non-integer exponent at the end it expands about
+            let w = factors.map(|(fa, fb)| fa * fb);
             if a != 0.0 && (p.y >= 0.0 || b == 0.0) {
-                inside(a, b, mass, own, p)
+                inside(a, b, mass, own, p, w)
             } else {
-                -inside(b, a, mass, swapped, p.reflected())
+                -inside(b, a, mass, swapped, p.reflected(), w)
             }
         } else if p.omy < 0.0 {
             right_of(a, mass, own, p)
@@ -249,10 +257,17 @@ impl JacobiFamily {
     }
 
     /// T_k(y), k < n (module documentation), y off the interval ends.
+    #[cfg(test)]
     pub(crate) fn transforms(&self, p: Point, out: &mut [f64]) {
+        self.transforms_with(p, None, out);
+    }
+
+    /// [`JacobiFamily::transforms`] with the weight's factors at y where the caller has them
+    /// ([`JacobiFamily::t0_with`]).
+    pub(crate) fn transforms_with(&self, p: Point, factors: Option<(f64, f64)>, out: &mut [f64]) {
         let n = self.n;
         let out = &mut out[..n];
-        out[0] = self.t0(p);
+        out[0] = self.t0_with(p, factors);
         if n == 1 {
             return;
         }
@@ -318,7 +333,9 @@ fn power(x: f64, e: f64) -> f64 {
 
 /// (J2) for |y| < 1, a != 0: cot(pi a) w(y) - K_0 2F1(1, -a-b; 1-a; z), z = (1 - y)/2,
 /// K_0 = mu_0 (a + b + 1) / (2 pi a).
-fn inside(a: f64, b: f64, mass: f64, ends: &Ends, p: Point) -> f64 {
+/// `w`: the weight at y where the caller has it (the product of its two factors, in either
+/// order).
+fn inside(a: f64, b: f64, mass: f64, ends: &Ends, p: Point, w: Option<f64>) -> f64 {
     let (z, omz) = (0.5 * p.omy, 0.5 * p.opy);
     let f = if a + b == 0.0 {
         1.0
@@ -342,7 +359,7 @@ fn inside(a: f64, b: f64, mass: f64, ends: &Ends, p: Point) -> f64 {
             power(omz, b) * f
         }
     };
-    let w = power(p.omy, a) * power(p.opy, b);
+    let w = w.unwrap_or_else(|| power(p.omy, a) * power(p.opy, b));
     w / tan_pi(a) - mass * (a + b + 1.0) / (2.0 * PI * a) * f
 }
 

@@ -53,10 +53,21 @@ impl Family {
         }
     }
 
-    fn transforms(&self, y: Point, out: &mut [f64]) {
+    /// The transforms at y; a Jacobi family takes its weight's factors at y where given
+    /// ([`Block::factors`]).
+    fn transforms(&self, y: Point, factors: Option<(f64, f64)>, out: &mut [f64]) {
         match self {
-            Family::Jacobi(f) => f.transforms(y, out),
+            Family::Jacobi(f) => f.transforms_with(y, factors, out),
             Family::Quotient(f) => f.transforms(y, out),
+        }
+    }
+
+    /// The weight at y from its factors ([`Block::factors`]): their product for a Jacobi
+    /// family (as its own weight computes it), the quotient family's own weight.
+    fn weight_from(&self, y: Point, factors: Option<(f64, f64)>) -> f64 {
+        match (self, factors) {
+            (Family::Jacobi(_), Some((fa, fb))) => fa * fb,
+            _ => self.weight(y),
         }
     }
 
@@ -157,6 +168,33 @@ impl Block {
         self.values_weighted(y, self.family.weight(y), buf, out);
     }
 
+    /// [`Block::values`] with the weight's factors at y given ([`Block::factors`]).
+    pub(crate) fn values_with(
+        &self,
+        y: Point,
+        factors: Option<(f64, f64)>,
+        buf: &mut [f64],
+        out: &mut [f64],
+    ) {
+        self.values_weighted(y, self.family.weight_from(y, factors), buf, out);
+    }
+
+    /// A Jacobi family's weight factors at y in (-1, 1), (1 - y)^a and (1 + y)^b, shared by
+    /// its values and its transform at the same point (and, given, by another block with the
+    /// same exponent a); None for the quotient family.
+    pub(crate) fn factors(&self, y: Point, first: Option<f64>) -> Option<(f64, f64)> {
+        match &self.family {
+            Family::Jacobi(f) => {
+                let (fa, fb) = match first {
+                    Some(fa) => (fa, f.weight_factors(y).1),
+                    None => f.weight_factors(y),
+                };
+                Some((fa, fb))
+            }
+            Family::Quotient(_) => None,
+        }
+    }
+
     /// The columns' values at y with the weight's value `w` given in place of w(y).
     pub(crate) fn values_weighted(&self, y: Point, w: f64, buf: &mut [f64], out: &mut [f64]) {
         let n = self.family.len();
@@ -181,15 +219,26 @@ impl Block {
 
     /// The columns' transforms T at y (off the ends) into out[..len].
     pub(crate) fn transforms(&self, y: Point, buf: &mut [f64], out: &mut [f64]) {
-        self.family_transforms(y, buf);
+        self.transforms_with(y, None, buf, out);
+    }
+
+    /// [`Block::transforms`] with the weight's factors at y given ([`Block::factors`]).
+    pub(crate) fn transforms_with(
+        &self,
+        y: Point,
+        factors: Option<(f64, f64)>,
+        buf: &mut [f64],
+        out: &mut [f64],
+    ) {
+        self.family_transforms(y, factors, buf);
         self.transforms_from(y, buf, out);
     }
 
     /// The family's transforms T_k at y, k < [`Block::scratch`], into buf: shared by the
-    /// blocks of one family ([`Block::same_family`]).
-    pub(crate) fn family_transforms(&self, y: Point, buf: &mut [f64]) {
+    /// blocks of one family ([`Block::same_family`]); `factors` as for [`Block::values_with`].
+    pub(crate) fn family_transforms(&self, y: Point, factors: Option<(f64, f64)>, buf: &mut [f64]) {
         let n = self.family.len();
-        self.family.transforms(y, &mut buf[..n]);
+        self.family.transforms(y, factors, &mut buf[..n]);
     }
 
     /// The columns' transforms at y into out[..len] from the family's, `family` (from

@@ -1062,11 +1062,12 @@ fn distance(a: &Fixed, b: &Fixed) -> Compared {
     let m = 1.0 / (1.0 - g);
     for (&t, &wt) in t.iter().zip(wt) {
         let u = 0.5 * (1.0 + t);
-        let omx = w * u.powf(m);
+        let um = u.powf(m);
+        let omx = w * um;
         let ((pa, qa, noise), (pb, qb)) =
             a.probe_both(b, |f| Pt::from_end(omx, f.basis.w), &mut work);
         check.see(&Pt::from_end(omx, w), (pa, qa, noise));
-        let jac = 0.5 * wt * w * m * u.powf(m - 1.0);
+        let jac = 0.5 * wt * w * m * um / u;
         dp += jac * (pa - pb).abs();
         dq += jac * (qa - qb).abs();
     }

@@ -252,6 +252,13 @@ fn log_spaced(lo: f64, hi: f64, n: usize) -> Vec<f64> {
         .collect()
 }
 
+/// The weight factors of a point's own zone's blocks ([`Basis::factors`]).
+#[derive(Clone, Copy, Debug)]
+struct Factors {
+    stick_g: Option<(f64, f64)>,
+    slip: [Option<(f64, f64)>; 2],
+}
+
 /// The bases of both zones for one c.
 #[derive(Clone, Debug)]
 pub(crate) struct Basis {
@@ -430,9 +437,41 @@ impl Basis {
         )
     }
 
+    /// The weight factors at a point of its own zone's blocks ([`Block::factors`]): the
+    /// stick q's P^(g,g) at a stick point, the two slip blocks at a slip point (the second
+    /// with the first's (1 - s)^-g). Each is computed once for the values and the transforms
+    /// there.
+    fn factors(&self, p: &Pt) -> Factors {
+        if p.on_stick() {
+            Factors {
+                stick_g: self.stick[2].factors(self.tau(p), None),
+                slip: [None, None],
+            }
+        } else {
+            let (s, _) = self.s_pair(p);
+            let first = self.slip[0].factors(s, None);
+            Factors {
+                stick_g: None,
+                slip: [first, self.slip[1].factors(s, first.map(|f| f.0))],
+            }
+        }
+    }
+
     /// The columns' values (p and q parts) at a point of the zone it lies in; `buf` of
     /// length [`Basis::scratch_len`] at least.
     pub(crate) fn tractions_row(&self, p: &Pt, pv: &mut [f64], qv: &mut [f64], buf: &mut [f64]) {
+        self.tractions_row_with(p, &self.factors(p), pv, qv, buf);
+    }
+
+    /// [`Basis::tractions_row`] with the point's weight factors ([`Basis::factors`]).
+    fn tractions_row_with(
+        &self,
+        p: &Pt,
+        factors: &Factors,
+        pv: &mut [f64],
+        qv: &mut [f64],
+        buf: &mut [f64],
+    ) {
         pv.fill(0.0);
         qv.fill(0.0);
         let buf = &mut buf[..self.scratch];
@@ -444,7 +483,7 @@ impl Basis {
             let n1 = self.stick[1].len();
             self.stick[1].values(t, buf, &mut qv[q0..q0 + n1]);
             let n2 = self.stick[2].len();
-            self.stick[2].values(t, buf, &mut qv[q0 + n1..q0 + n1 + n2]);
+            self.stick[2].values_with(t, factors.stick_g, buf, &mut qv[q0 + n1..q0 + n1 + n2]);
             if let Some(bx) = &self.bonded {
                 let mut f = [C64::new(0.0, 0.0); MAX_DEGREE];
                 let f = &mut f[..bx.degree()];
@@ -455,9 +494,9 @@ impl Basis {
         } else {
             let (s, _) = self.s_pair(p);
             let mut at = s0;
-            for b in &self.slip {
+            for (b, f) in self.slip.iter().zip(factors.slip) {
                 let n = b.len();
-                b.values(s, buf, &mut pv[at..at + n]);
+                b.values_with(s, f, buf, &mut pv[at..at + n]);
                 at += n;
             }
             for j in s0..at {
@@ -467,7 +506,20 @@ impl Basis {
     }
 
     /// The columns' H[p] and H[q] at a point; `scratch` of length [`Basis::scratch_len`].
+    #[cfg(test)]
     fn hilbert_row(&self, p: &Pt, hp: &mut [f64], hq: &mut [f64], scratch: &mut [f64]) {
+        self.hilbert_row_with(p, &self.factors(p), hp, hq, scratch);
+    }
+
+    /// [`Basis::hilbert_row`] with the point's weight factors ([`Basis::factors`]).
+    fn hilbert_row_with(
+        &self,
+        p: &Pt,
+        factors: &Factors,
+        hp: &mut [f64],
+        hq: &mut [f64],
+        scratch: &mut [f64],
+    ) {
         hp.fill(0.0);
         hq.fill(0.0);
         let (buf, other) = scratch.split_at_mut(self.scratch);
@@ -476,24 +528,24 @@ impl Basis {
         let t = self.tau(p);
         let n0 = self.stick[0].len();
         // the even and odd Legendre blocks share their family's transforms
-        self.stick[0].family_transforms(t, buf);
+        self.stick[0].family_transforms(t, None, buf);
         self.stick[0].transforms_from(t, buf, &mut hp[..n0]);
         let n1 = self.stick[1].len();
         if !self.stick[1].same_family(&self.stick[0]) {
-            self.stick[1].family_transforms(t, buf);
+            self.stick[1].family_transforms(t, None, buf);
         }
         self.stick[1].transforms_from(t, buf, &mut hq[q0..q0 + n1]);
         let n2 = self.stick[2].len();
-        self.stick[2].transforms(t, buf, &mut hq[q0 + n1..q0 + n1 + n2]);
+        self.stick[2].transforms_with(t, factors.stick_g, buf, &mut hq[q0 + n1..q0 + n1 + n2]);
         // H = -T on the zone's own map
         for v in hp[..s0].iter_mut().chain(hq[..s0].iter_mut()) {
             *v = -*v;
         }
         let (s, sm) = self.s_pair(p);
         let mut at = s0;
-        for b in &self.slip {
+        for (b, f) in self.slip.iter().zip(factors.slip) {
             let n = b.len();
-            b.transforms(s, buf, &mut hp[at..at + n]);
+            b.transforms_with(s, f, buf, &mut hp[at..at + n]);
             b.transforms(sm, buf, &mut other[at..at + n]);
             at += n;
         }
@@ -724,8 +776,9 @@ impl Assembled {
             .map(|p| (p, true))
             .chain(slip.iter().map(|p| (p, false)))
         {
-            basis.tractions_row(pt, &mut pv, &mut qv, &mut scratch);
-            basis.hilbert_row(pt, &mut hp, &mut hq, &mut scratch);
+            let factors = basis.factors(pt);
+            basis.tractions_row_with(pt, &factors, &mut pv, &mut qv, &mut scratch);
+            basis.hilbert_row_with(pt, &factors, &mut hp, &mut hq, &mut scratch);
             p_rows.extend_from_slice(&pv);
             let weight = pt.omx.powf(k.g);
             weights.push(weight);
@@ -957,17 +1010,30 @@ impl Fixed {
     fn combine(&self, p: &Pt, work: &[f64]) -> (f64, f64, f64) {
         let n = self.coef.len();
         let (pv, qv) = (&work[..n], &work[n..2 * n]);
-        let (mut value, mut size) = (0.0, 0.0);
-        for (v, a) in pv.iter().zip(&self.coef) {
-            value += v * a;
-            size += (v * a).abs();
-        }
+        // the sums over the columns that can be nonzero in the point's zone, in the columns'
+        // order (the others' exact zeros leave the sums as they are)
+        let sum = |v: &[f64], ranges: &[std::ops::Range<usize>]| {
+            let (mut value, mut size) = (0.0, 0.0);
+            for r in ranges {
+                for (v, a) in v[r.clone()].iter().zip(&self.coef[r.clone()]) {
+                    value += v * a;
+                    size += (v * a).abs();
+                }
+            }
+            (value, size)
+        };
+        let (q0, s0) = self.basis.starts();
+        let bonded = self.basis.bonded_start()..n;
+        let on_stick = p.on_stick();
+        let (value, size) = if on_stick {
+            sum(pv, &[0..q0, bonded.clone()])
+        } else {
+            sum(pv, &[s0..bonded.start])
+        };
         let mu = self.basis.k.mu;
         // q = mu p on the slip zone exactly, not to the rounding of a second sum
-        let (q, q_size) = if p.on_stick() {
-            qv.iter()
-                .zip(&self.coef)
-                .fold((0.0, 0.0), |(q, s), (v, a)| (q + v * a, s + (v * a).abs()))
+        let (q, q_size) = if on_stick {
+            sum(qv, &[q0..s0, bonded])
         } else {
             (mu * value, 0.0)
         };
