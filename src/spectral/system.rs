@@ -1012,10 +1012,10 @@ impl Fixed {
         let (pv, qv) = (&work[..n], &work[n..2 * n]);
         // the sums over the columns that can be nonzero in the point's zone, in the columns'
         // order (the others' exact zeros leave the sums as they are)
-        let sum = |v: &[f64], ranges: &[std::ops::Range<usize>]| {
+        let sum = |v: &[f64], ranges: &[(usize, usize)]| {
             let (mut value, mut size) = (0.0, 0.0);
-            for r in ranges {
-                for (v, a) in v[r.clone()].iter().zip(&self.coef[r.clone()]) {
+            for &(from, to) in ranges {
+                for (v, a) in v[from..to].iter().zip(&self.coef[from..to]) {
                     value += v * a;
                     size += (v * a).abs();
                 }
@@ -1023,17 +1023,17 @@ impl Fixed {
             (value, size)
         };
         let (q0, s0) = self.basis.starts();
-        let bonded = self.basis.bonded_start()..n;
+        let bonded = (self.basis.bonded_start(), n);
         let on_stick = p.on_stick();
         let (value, size) = if on_stick {
-            sum(pv, &[0..q0, bonded.clone()])
+            sum(pv, &[(0, q0), bonded])
         } else {
-            sum(pv, &[s0..bonded.start])
+            sum(pv, &[(s0, bonded.0)])
         };
         let mu = self.basis.k.mu;
         // q = mu p on the slip zone exactly, not to the rounding of a second sum
         let (q, q_size) = if on_stick {
-            sum(qv, &[q0..s0, bonded])
+            sum(qv, &[(q0, s0), bonded])
         } else {
             (mu * value, 0.0)
         };
