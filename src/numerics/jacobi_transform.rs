@@ -271,54 +271,123 @@ impl JacobiFamily {
         if n == 1 {
             return;
         }
-        let r = &self.rec;
+        match self.miller_start(p) {
+            None => self.forward(p, out),
+            Some(m) => {
+                let t0 = out[0];
+                self.backward(&[(p, m, 0, t0)], out);
+            }
+        }
+    }
+
+    /// [`JacobiFamily::transforms_with`] at each of `points` with its `factors`, point i's
+    /// transforms into out[i n..(i + 1) n]: the same values to the bit, with the backward
+    /// recurrences of up to [`MILLER_LANES`] points run together (independent dependency
+    /// chains, which the processor overlaps; one point's recurrence is a chain of dependent
+    /// multiplications and subtractions).
+    pub(crate) fn transforms_many(
+        &self,
+        points: &[Point],
+        factors: &[Option<(f64, f64)>],
+        out: &mut [f64],
+    ) {
+        let n = self.n;
+        let mut lanes: Vec<(Point, usize, usize, f64)> = Vec::with_capacity(MILLER_LANES);
+        for (i, (&p, &f)) in points.iter().zip(factors).enumerate() {
+            let row = &mut out[i * n..(i + 1) * n];
+            row[0] = self.t0_with(p, f);
+            if n == 1 {
+                continue;
+            }
+            match self.miller_start(p) {
+                None => self.forward(p, row),
+                Some(m) => {
+                    lanes.push((p, m, i * n, row[0]));
+                    if lanes.len() == MILLER_LANES {
+                        self.backward(&lanes, out);
+                        lanes.clear();
+                    }
+                }
+            }
+        }
+        if !lanes.is_empty() {
+            self.backward(&lanes, out);
+        }
+    }
+
+    /// Where the transforms at y come from Miller's backward recurrence: its start m (well
+    /// above n), or None for the forward recurrence (inside, or k ln rho <= [`FORWARD_SPAN`]
+    /// for every k < n).
+    fn miller_start(&self, p: Point) -> Option<usize> {
+        let n = self.n;
         let ln_rho = p.ln_rho();
         if p.inside() || (n as f64) * ln_rho <= FORWARD_SPAN {
-            // T_1 from the inhomogeneous step, then T_(k+1) = A_k T_k - B_k T_(k-1) with the
-            // divisions by off[k] as multiplications (one fused step per degree on the
-            // dependency chain)
-            out[1] = ((p.y - r.diag[0]) * out[0] + self.mass / PI) * r.inv_off[0];
-            let (mut prev, mut cur) = (out[0], out[1]);
-            for k in 1..n - 1 {
-                let next =
-                    (p.y - r.diag[k]) * r.inv_off[k] * cur - r.off[k - 1] * r.inv_off[k] * prev;
-                out[k + 1] = next;
-                (prev, cur) = (cur, next);
-            }
+            None
         } else {
-            // Miller: the minimal solution f_k, unnormalised, by the homogeneous recurrence
-            // backward from f_m = 0, f_(m-1) = 1, m well above n,
-            //   f_(k-1) = ((y - diag_k) f_k - off_k f_(k+1)) / off_(k-1),
-            // rescaled before it can overflow (it grows like rho per step); then
-            // T_k = T_0 f_k / f_0
-            let m = (n + (MILLER_SPAN / ln_rho).ceil() as usize).min(deepest(n, MILLER_SPAN));
-            let t0 = out[0];
-            let (mut next, mut cur) = (0.0, 1.0);
-            for k in (1..m).rev() {
-                let inv = r.inv_off[k - 1];
-                let prev = (p.y - r.diag[k]) * inv * cur - r.off[k] * inv * next;
-                (next, cur) = (cur, prev);
-                if k - 1 < n {
-                    out[k - 1] = cur;
+            Some((n + (MILLER_SPAN / ln_rho).ceil() as usize).min(deepest(n, MILLER_SPAN)))
+        }
+    }
+
+    /// The forward recurrence from T_0 in out[0]: T_1 from the inhomogeneous step, then
+    /// T_(k+1) = A_k T_k - B_k T_(k-1) with the divisions by off[k] as multiplications (one
+    /// fused step per degree on the dependency chain).
+    fn forward(&self, p: Point, out: &mut [f64]) {
+        let (n, r) = (self.n, &self.rec);
+        out[1] = ((p.y - r.diag[0]) * out[0] + self.mass / PI) * r.inv_off[0];
+        let (mut prev, mut cur) = (out[0], out[1]);
+        for k in 1..n - 1 {
+            let next = (p.y - r.diag[k]) * r.inv_off[k] * cur - r.off[k - 1] * r.inv_off[k] * prev;
+            out[k + 1] = next;
+            (prev, cur) = (cur, next);
+        }
+    }
+
+    /// Miller's backward recurrence for each lane (point, start m, offset of its n
+    /// transforms in `out`, its T_0): the minimal solution f_k, unnormalised, by the
+    /// homogeneous recurrence backward from f_m = 0, f_(m-1) = 1,
+    ///   f_(k-1) = ((y - diag_k) f_k - off_k f_(k+1)) / off_(k-1),
+    /// rescaled before it can overflow (it grows like rho per step); then
+    /// T_k = T_0 f_k / f_0. The lanes step through the degrees together, each from its own
+    /// start.
+    fn backward(&self, lanes: &[(Point, usize, usize, f64)], out: &mut [f64]) {
+        let (n, r) = (self.n, &self.rec);
+        let mut next = [0.0; MILLER_LANES];
+        let mut cur = [1.0; MILLER_LANES];
+        let top = lanes.iter().map(|l| l.1).max().unwrap_or(0);
+        for k in (1..top).rev() {
+            let (inv, diag, off) = (r.inv_off[k - 1], r.diag[k], r.off[k]);
+            for (j, &(p, m, at, _)) in lanes.iter().enumerate() {
+                if k >= m {
+                    continue;
                 }
-                if cur.abs() > RESCALE {
-                    next /= RESCALE;
-                    cur /= RESCALE;
+                let prev = (p.y - diag) * inv * cur[j] - off * inv * next[j];
+                (next[j], cur[j]) = (cur[j], prev);
+                if k - 1 < n {
+                    out[at + k - 1] = cur[j];
+                }
+                if cur[j].abs() > RESCALE {
+                    next[j] /= RESCALE;
+                    cur[j] /= RESCALE;
                     if k - 1 < n {
-                        for v in &mut out[k - 1..n] {
+                        for v in &mut out[at + k - 1..at + n] {
                             *v /= RESCALE;
                         }
                     }
                 }
             }
-            let norm = t0 / cur;
-            for v in &mut out[1..n] {
+        }
+        for (j, &(_, _, at, t0)) in lanes.iter().enumerate() {
+            let norm = t0 / cur[j];
+            for v in &mut out[at + 1..at + n] {
                 *v *= norm;
             }
-            out[0] = t0;
+            out[at] = t0;
         }
     }
 }
+
+/// Points whose backward recurrences [`JacobiFamily::transforms_many`] runs together.
+const MILLER_LANES: usize = 4;
 
 /// The transform at y of w(t) / (z - t), z outside [-1, 1], from the family's T_0 at y and at
 /// z (J6).

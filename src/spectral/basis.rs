@@ -241,6 +241,26 @@ impl Block {
         self.family.transforms(y, factors, &mut buf[..n]);
     }
 
+    /// [`Block::family_transforms`] at each of `points` with its factors, point i's into
+    /// out[i s..(i + 1) s], s = [`Block::scratch`] (the backward recurrences of several
+    /// points together, [`JacobiFamily::transforms_many`]; the same values to the bit).
+    pub(crate) fn family_transforms_many(
+        &self,
+        points: &[Point],
+        factors: &[Option<(f64, f64)>],
+        out: &mut [f64],
+    ) {
+        match &self.family {
+            Family::Jacobi(f) => f.transforms_many(points, factors, out),
+            Family::Quotient(f) => {
+                let n = f.len();
+                for (p, row) in points.iter().zip(out.chunks_exact_mut(n)) {
+                    f.transforms(*p, row);
+                }
+            }
+        }
+    }
+
     /// The columns' transforms at y into out[..len] from the family's, `family` (from
     /// [`Block::family_transforms`] at the same y, of this block or one of the same family).
     pub(crate) fn transforms_from(&self, y: Point, family: &[f64], out: &mut [f64]) {

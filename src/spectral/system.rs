@@ -252,6 +252,71 @@ fn log_spaced(lo: f64, hi: f64, n: usize) -> Vec<f64> {
         .collect()
 }
 
+/// The families' transforms at a set of points, each family at all of them at once
+/// ([`Block::family_transforms_many`]): the stick blocks' at tau(x) (the odd Legendre block
+/// sharing the even one's family), the slip blocks' at s(x) and at the mirror point s(-x),
+/// each with the weight factors of the point's own zone ([`Basis::factors`]).
+struct FamilyRows {
+    /// Per family (stick 0, 1, 2; slip 0, 1; mirror 0, 1): its length and its rows.
+    rows: [(usize, Vec<f64>); 7],
+    /// Which of `rows` serves stick block 1 (0 where it shares block 0's family).
+    stick_odd: usize,
+    /// The points' weight factors.
+    factors: Vec<Factors>,
+}
+
+impl FamilyRows {
+    fn new(basis: &Basis, points: &[Pt]) -> Self {
+        let factors: Vec<Factors> = points.iter().map(|p| basis.factors(p)).collect();
+        let tau: Vec<Point> = points.iter().map(|p| basis.tau(p)).collect();
+        let (s, sm): (Vec<Point>, Vec<Point>) = points.iter().map(|p| basis.s_pair(p)).unzip();
+        let none = vec![None; points.len()];
+        let stick_g: Vec<_> = factors.iter().map(|f| f.stick_g).collect();
+        let slip: [Vec<_>; 2] = [0, 1].map(|i| factors.iter().map(|f| f.slip[i]).collect());
+        let run = |block: &Block, at: &[Point], f: &[Option<(f64, f64)>]| {
+            let n = block.scratch();
+            let mut out = vec![0.0; n * at.len()];
+            block.family_transforms_many(at, f, &mut out);
+            (n, out)
+        };
+        let shared = basis.stick[1].same_family(&basis.stick[0]);
+        FamilyRows {
+            rows: [
+                run(&basis.stick[0], &tau, &none),
+                if shared {
+                    (0, Vec::new())
+                } else {
+                    run(&basis.stick[1], &tau, &none)
+                },
+                run(&basis.stick[2], &tau, &stick_g),
+                run(&basis.slip[0], &s, &slip[0]),
+                run(&basis.slip[1], &s, &slip[1]),
+                run(&basis.slip[0], &sm, &none),
+                run(&basis.slip[1], &sm, &none),
+            ],
+            stick_odd: if shared { 0 } else { 1 },
+            factors,
+        }
+    }
+
+    /// The seven families' transforms at point i ([`Basis::hilbert_row_from`]).
+    fn at(&self, i: usize) -> [&[f64]; 7] {
+        let row = |k: usize| {
+            let (n, v) = &self.rows[k];
+            &v[i * n..(i + 1) * n]
+        };
+        [
+            row(0),
+            row(self.stick_odd),
+            row(2),
+            row(3),
+            row(4),
+            row(5),
+            row(6),
+        ]
+    }
+}
+
 /// The weight factors of a point's own zone's blocks ([`Basis::factors`]).
 #[derive(Clone, Copy, Debug)]
 struct Factors {
@@ -294,19 +359,11 @@ impl Basis {
             .collect();
         let n = sizes.legendre;
         let ng = sizes.stick_g;
+        // the even and odd Legendre blocks: one family (built once)
+        let legendre = JacobiFamily::new(0.0, 0.0, 2 * n);
         let stick = [
-            Block::new(
-                JacobiFamily::new(0.0, 0.0, 2 * n),
-                parity(n, 0),
-                &stick_z,
-                1.0,
-            ),
-            Block::new(
-                JacobiFamily::new(0.0, 0.0, 2 * n),
-                parity(n, 1),
-                &stick_z,
-                -1.0,
-            ),
+            Block::new(legendre.clone(), parity(n, 0), &stick_z, 1.0),
+            Block::new(legendre, parity(n, 1), &stick_z, -1.0),
             // the poles times (1 - tau^2)^g only in thin slip zones (with the bonded
             // columns): elsewhere the unweighted pairs carry the stick q's continuation to
             // x = +-1 alone (docs/theory_spectral.md (B2), measured there)
@@ -508,45 +565,40 @@ impl Basis {
     /// The columns' H[p] and H[q] at a point; `scratch` of length [`Basis::scratch_len`].
     #[cfg(test)]
     fn hilbert_row(&self, p: &Pt, hp: &mut [f64], hq: &mut [f64], scratch: &mut [f64]) {
-        self.hilbert_row_with(p, &self.factors(p), hp, hq, scratch);
+        let rows = FamilyRows::new(self, std::slice::from_ref(p));
+        self.hilbert_row_from(p, &rows.at(0), hp, hq, scratch);
     }
 
-    /// [`Basis::hilbert_row`] with the point's weight factors ([`Basis::factors`]).
-    fn hilbert_row_with(
+    /// [`Basis::hilbert_row`] from the families' transforms at the point ([`FamilyRows`]).
+    fn hilbert_row_from(
         &self,
         p: &Pt,
-        factors: &Factors,
+        fam: &[&[f64]; 7],
         hp: &mut [f64],
         hq: &mut [f64],
         scratch: &mut [f64],
     ) {
         hp.fill(0.0);
         hq.fill(0.0);
-        let (buf, other) = scratch.split_at_mut(self.scratch);
-        let other = &mut other[..hp.len()];
+        let other = &mut scratch[self.scratch..self.scratch + hp.len()];
         let (q0, s0) = self.starts();
         let t = self.tau(p);
         let n0 = self.stick[0].len();
-        // the even and odd Legendre blocks share their family's transforms
-        self.stick[0].family_transforms(t, None, buf);
-        self.stick[0].transforms_from(t, buf, &mut hp[..n0]);
+        self.stick[0].transforms_from(t, fam[0], &mut hp[..n0]);
         let n1 = self.stick[1].len();
-        if !self.stick[1].same_family(&self.stick[0]) {
-            self.stick[1].family_transforms(t, None, buf);
-        }
-        self.stick[1].transforms_from(t, buf, &mut hq[q0..q0 + n1]);
+        self.stick[1].transforms_from(t, fam[1], &mut hq[q0..q0 + n1]);
         let n2 = self.stick[2].len();
-        self.stick[2].transforms_with(t, factors.stick_g, buf, &mut hq[q0 + n1..q0 + n1 + n2]);
+        self.stick[2].transforms_from(t, fam[2], &mut hq[q0 + n1..q0 + n1 + n2]);
         // H = -T on the zone's own map
         for v in hp[..s0].iter_mut().chain(hq[..s0].iter_mut()) {
             *v = -*v;
         }
         let (s, sm) = self.s_pair(p);
         let mut at = s0;
-        for (b, f) in self.slip.iter().zip(factors.slip) {
+        for (i, b) in self.slip.iter().enumerate() {
             let n = b.len();
-            b.transforms_with(s, f, buf, &mut hp[at..at + n]);
-            b.transforms(sm, buf, &mut other[at..at + n]);
+            b.transforms_from(s, fam[3 + i], &mut hp[at..at + n]);
+            b.transforms_from(sm, fam[5 + i], &mut other[at..at + n]);
             at += n;
         }
         let mu = self.k.mu;
@@ -771,14 +823,16 @@ impl Assembled {
         let mut p_rows = Vec::with_capacity(points * n);
         let mut weights = Vec::with_capacity(points);
         let mut on_stick = Vec::with_capacity(points);
-        for (pt, stick_point) in stick
+        let all: Vec<Pt> = stick.iter().chain(&slip).copied().collect();
+        let family_rows = FamilyRows::new(&basis, &all);
+        for (i, (pt, stick_point)) in stick
             .iter()
             .map(|p| (p, true))
             .chain(slip.iter().map(|p| (p, false)))
+            .enumerate()
         {
-            let factors = basis.factors(pt);
-            basis.tractions_row_with(pt, &factors, &mut pv, &mut qv, &mut scratch);
-            basis.hilbert_row_with(pt, &factors, &mut hp, &mut hq, &mut scratch);
+            basis.tractions_row_with(pt, &family_rows.factors[i], &mut pv, &mut qv, &mut scratch);
+            basis.hilbert_row_from(pt, &family_rows.at(i), &mut hp, &mut hq, &mut scratch);
             p_rows.extend_from_slice(&pv);
             let weight = pt.omx.powf(k.g);
             weights.push(weight);
