@@ -197,8 +197,26 @@ impl Block {
 
     /// The columns' values at y with the weight's value `w` given in place of w(y).
     pub(crate) fn values_weighted(&self, y: Point, w: f64, buf: &mut [f64], out: &mut [f64]) {
+        self.family_values(y, w, buf);
+        self.values_from(y, w, buf, out);
+    }
+
+    /// The family's weight at y.
+    pub(crate) fn weight(&self, y: Point) -> f64 {
+        self.family.weight(y)
+    }
+
+    /// The family's values w p_k(y), k < [`Block::scratch`], into buf: shared by the blocks of
+    /// one family ([`Block::same_family`]).
+    pub(crate) fn family_values(&self, y: Point, w: f64, buf: &mut [f64]) {
         let n = self.family.len();
         self.family.values_weighted(y, w, &mut buf[..n]);
+    }
+
+    /// The columns' values at y (weight w) into out[..len] from the family's, `family` (from
+    /// [`Block::family_values`] at the same y and w, of this block or one of the same family).
+    pub(crate) fn values_from(&self, y: Point, w: f64, family: &[f64], out: &mut [f64]) {
+        let buf = family;
         for (o, &k) in out.iter_mut().zip(&self.degrees) {
             *o = buf[k];
         }

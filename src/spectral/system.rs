@@ -535,10 +535,20 @@ impl Basis {
         let (q0, s0) = self.starts();
         if p.on_stick() {
             let t = self.tau(p);
+            // the even and odd Legendre blocks share their family's values
             let n0 = self.stick[0].len();
-            self.stick[0].values(t, buf, &mut pv[..n0]);
+            let w = self.stick[0].weight(t);
+            self.stick[0].family_values(t, w, buf);
+            self.stick[0].values_from(t, w, buf, &mut pv[..n0]);
             let n1 = self.stick[1].len();
-            self.stick[1].values(t, buf, &mut qv[q0..q0 + n1]);
+            let w = if self.stick[1].same_family(&self.stick[0]) {
+                w
+            } else {
+                let w = self.stick[1].weight(t);
+                self.stick[1].family_values(t, w, buf);
+                w
+            };
+            self.stick[1].values_from(t, w, buf, &mut qv[q0..q0 + n1]);
             let n2 = self.stick[2].len();
             self.stick[2].values_with(t, factors.stick_g, buf, &mut qv[q0 + n1..q0 + n1 + n2]);
             if let Some(bx) = &self.bonded {
@@ -823,6 +833,8 @@ impl Assembled {
         let mut p_rows = Vec::with_capacity(points * n);
         let mut weights = Vec::with_capacity(points);
         let mut on_stick = Vec::with_capacity(points);
+        let mut row = vec![0.0; cols];
+        let mut scale = vec![0.0; cols];
         let all: Vec<Pt> = stick.iter().chain(&slip).copied().collect();
         let family_rows = FamilyRows::new(&basis, &all);
         for (i, (pt, stick_point)) in stick
@@ -837,25 +849,32 @@ impl Assembled {
             let weight = pt.omx.powf(k.g);
             weights.push(weight);
             on_stick.push(stick_point);
+            // each row with its squares summed into the column scales, row by row
             for j in 0..n {
-                *a.at_mut(r, j) = weight * (hp[j] - k.b * qv[j]);
+                row[j] = weight * (hp[j] - k.b * qv[j]);
+                scale[j] += row[j] * row[j];
+            }
+            for (j, &v) in row[..n].iter().enumerate() {
+                *a.at_mut(r, j) = v;
             }
             r += 1;
             if stick_point {
                 for j in 0..n {
-                    *a.at_mut(r, j) = weight * (hq[j] + k.b * pv[j]);
+                    row[j] = weight * (hq[j] + k.b * pv[j]);
+                    scale[j] += row[j] * row[j];
                 }
-                *a.at_mut(r, n) = -weight;
+                row[n] = -weight;
+                scale[n] += row[n] * row[n];
+                for (j, &v) in row.iter().enumerate() {
+                    *a.at_mut(r, j) = v;
+                }
                 r += 1;
             }
         }
         // column scales
-        let mut scale = vec![0.0; cols];
         for (j, s) in scale.iter_mut().enumerate() {
-            let col = a.col_mut(j);
-            let sum: f64 = col.iter().fold(0.0, |acc, v| acc + v * v);
-            *s = if sum > 0.0 { 1.0 / sum.sqrt() } else { 1.0 };
-            col.iter_mut().for_each(|v| *v *= *s);
+            *s = if *s > 0.0 { 1.0 / s.sqrt() } else { 1.0 };
+            a.col_mut(j).iter_mut().for_each(|v| *v *= *s);
         }
         // the constraints, in the scaled columns: int p = 1 (S3), and p and q continuous at
         // x = c (C2)
