@@ -1067,8 +1067,11 @@ impl Fixed {
     /// transforms' scratch after them).
     fn columns_into(&self, p: &Pt, work: &mut Vec<f64>) {
         let n = self.coef.len();
-        work.clear();
-        work.resize(2 * n + self.basis.scratch_len(), 0.0);
+        // (tractions_row sets every value it is read for: no zeroing between points)
+        let len = 2 * n + self.basis.scratch_len();
+        if work.len() < len {
+            work.resize(len, 0.0);
+        }
         let (pv, rest) = work.split_at_mut(n);
         let (qv, buf) = rest.split_at_mut(n);
         self.basis.tractions_row(p, pv, qv, buf);
