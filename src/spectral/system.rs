@@ -600,7 +600,10 @@ impl Basis {
         let n2 = self.stick[2].len();
         self.stick[2].transforms_from(t, fam[2], &mut hq[q0 + n1..q0 + n1 + n2]);
         // H = -T on the zone's own map
-        for v in hp[..s0].iter_mut().chain(hq[..s0].iter_mut()) {
+        for v in &mut hp[..s0] {
+            *v = -*v;
+        }
+        for v in &mut hq[..s0] {
             *v = -*v;
         }
         let (s, sm) = self.s_pair(p);
