@@ -325,20 +325,28 @@ impl Elimination {
         // mu~ = 10, 1 - c = 8e-13, 161 unknowns) moved by 9.5e-9 with the subtractions taken
         // one by one
         let mut acc = vec![0.0; rows];
+        let pivot_cols: Vec<&[f64]> = pivots.iter().map(|&pj| a.col(order[pj])).collect();
         for (jj, &j) in keep.iter().enumerate() {
+            let col = a.col(order[j]);
+            let out = reduced.col_mut(jj);
+            if let [p0, p1, p2] = pivot_cols[..] {
+                // three constraints (the spectral frames'): one pass, the same sums in the
+                // same order
+                let (k0, k1, k2) = (cons[0].0[j], cons[1].0[j], cons[2].0[j]);
+                for i in 0..rows {
+                    let s = 0.0 + p0[i] * k0 + p1[i] * k1 + p2[i] * k2;
+                    out[i] = col[i] - s;
+                }
+                continue;
+            }
             acc.fill(0.0);
-            for (&pj, (k, _)) in pivots.iter().zip(&cons) {
+            for (pc, (k, _)) in pivot_cols.iter().zip(&cons) {
                 let f = k[j];
-                for (s, v) in acc.iter_mut().zip(a.col(order[pj])) {
+                for (s, v) in acc.iter_mut().zip(pc.iter()) {
                     *s += v * f;
                 }
             }
-            for ((o, v), s) in reduced
-                .col_mut(jj)
-                .iter_mut()
-                .zip(a.col(order[j]))
-                .zip(&acc)
-            {
+            for ((o, v), s) in out.iter_mut().zip(col).zip(&acc) {
                 *o = v - s;
             }
         }
