@@ -11,7 +11,9 @@
  * - the dissipation along the path is positive, with a finite estimate, and the same for -Q;
  * - what the exact path does not answer is refused with a status, a message naming the
  *   exact method and the LCP history, nothing written and the history unchanged: a fretting
- *   run and the unloading at strong coupling (its corner structure is not built).
+ *   run and the unloading at strong coupling (the corner's outer model answers only to
+ *   tolerances above its corner zone's width, 8e-5 here: docs/theory_tangential.md
+ *   section 21).
  * Quick mode (the C++ build) leaves out the finer grid.
  * Scene: the isotropic form b* = 0.9 (nu = -0.8), mu = 1, Q = 0.3 mu P, where the trailing
  * edge zone is 0.078 wide (docs/theory_tangential.md section 12). */
@@ -197,8 +199,8 @@ int main(void)
     CHECK(w > 0.0 && isfinite(werr) && fabs(d1 - w) <= 1e-10 * w);
 
     /* refused: a fretting run at its first unloading step and the strong coupling's
-     * unloading (the corner structure, not built), with the solver's status; nothing
-     * written, handles NULL, the history unchanged */
+     * unloading (the corner zone the outer model leaves out exceeds the tolerance), with the
+     * three-zone pattern's status; nothing written, handles NULL, the history unchanged */
     CHECK_OK(orthoslip_cycle_options_new(&o));
     CHECK_OK(orthoslip_cycle_options_set_method(o, ORTHOSLIP_CYCLE_METHOD_EXACT));
     {
