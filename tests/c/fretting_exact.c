@@ -214,7 +214,8 @@ int main(void)
     CHECK_OK(orthoslip_history_load(refused, LOAD));
     look(refused, before);
     {
-        orthoslip_status st = orthoslip_history_load(refused, 0.0);
+        /* the first unloading step (0.9 Q*): the outer model's march is one step */
+        orthoslip_status st = orthoslip_history_load(refused, 0.9 * LOAD);
         CHECK(st == ORTHOSLIP_ERROR_NO_ADMISSIBLE_SOLUTION || st == ORTHOSLIP_ERROR_NO_CONVERGENCE);
         CHECK_MESSAGE("orthoslip_history_load", "ORTHOSLIP_CYCLE_METHOD_LCP_HISTORY");
     }
