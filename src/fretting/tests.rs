@@ -527,7 +527,7 @@ fn exact_path_is_approached_by_the_grid() {
 /// before the first loading's steps are spent, with the solver's status and a message
 /// saying so, never answered by the grid.
 #[test]
-#[ignore = "slow: about 40 s, the probe's loaded state, first unloading step (the corner's outer model) and -Q*"]
+#[ignore = "slow: about 25 s, the probe's loaded state, first unloading step (the corner's outer model) and -Q*"]
 fn exact_run_on_the_ply_is_refused_at_the_reloading() {
     let (c, opt) = exact_ply();
     let t = std::time::Instant::now();

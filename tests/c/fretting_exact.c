@@ -104,7 +104,8 @@ static void look(const orthoslip_history *h, double out[16])
 int main(void)
 {
     orthoslip_contact *k = contact_new(1e-10, 1e-8);
-    /* looser tolerances for the refused unloading: its ladder stops sooner (0.5 s, not 4 s) */
+    /* looser tolerances for the refused unloading: its three-zone ladder stops sooner (0.5 s,
+     * not 8 s), and the outer model's one step refuses in 1 s */
     orthoslip_contact *loose = contact_new(1e-6, 1e-4);
     orthoslip_history *refused = history_new(loose, ORTHOSLIP_CYCLE_METHOD_EXACT, 100);
     orthoslip_history *h = history_new(k, ORTHOSLIP_CYCLE_METHOD_EXACT, 100);

@@ -703,12 +703,12 @@ fn goodman_slip_next_to_the_loaded_stick_end_is_a_number() {
 /// whole branch less the exact three-zone part over -0.485 Q* .. -Q* (2.4678765e-3, good to
 /// 4e-8), both from section 14's `dissipation_of_the_first_unloading`. The grid's W1 at
 /// N = 200 with 20, 40, 80 steps (2.4646863e-3, 2.4664669e-3, 2.4674228e-3) extrapolated
-/// in the steps with order 1 is 2.4683787e-3, with the observed order 0.898 (the ratio of
-/// its two differences, 1.863) 2.4685305e-3: the corner phase's reference lies between
-/// 5.022e-7 and 6.540e-7, widened by the grid's N-error at N = 200 (about 5e-8, section 7's
+/// in the steps with order 1 is 2.4683787e-3, with the observed order 0.897 (the ratio of
+/// its two differences, 1.863) 2.4685308e-3: the corner phase's reference lies between
+/// 5.022e-7 and 6.543e-7, widened by the grid's N-error at N = 200 (about 5e-8, section 7's
 /// refinement table).
 #[test]
-#[ignore = "slow: about 4 min, 24 loads on the ply's first unloading"]
+#[ignore = "slow: about 3.5 min, 24 loads on the ply's first unloading"]
 fn ply_corner_phase_dissipation_against_the_grid() {
     let k = ply();
     let q_star = 0.18;

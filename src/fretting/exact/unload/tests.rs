@@ -1244,7 +1244,7 @@ fn measure_outer_estimates() {
 /// against the grid LCP history in `corner_structure_against_the_grid`): the ends' sum and
 /// the tractions in (T1).
 #[test]
-#[ignore = "slow: about 15 s, the three-zone refusal, the outer ladder and the five-zone solver"]
+#[ignore = "slow: about 8 s, the three-zone refusal, the outer ladder and the five-zone solver"]
 fn routed_outer_model_against_the_five_zone_solver() {
     let k = strong();
     let q_star = 0.3;
