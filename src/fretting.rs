@@ -1018,7 +1018,7 @@ impl LoadPath {
                 let profile = exact::path::ExactProfile { path: e.clone() };
                 let (p, q) = profile.tractions(x);
                 let (c1, c2) = e.stick_set();
-                let zone = if x >= c1 && x <= c2 {
+                let zone = if (x >= c1 && x <= c2) || e.in_stuck_layer(1.0 + x, 1.0 - x) {
                     Zone::Stick
                 } else if q < 0.0 {
                     Zone::SlipPositive

@@ -82,7 +82,7 @@ fn step(path: &ExactPath, at: &[(f64, f64)], unit: f64) -> Step {
         let (pp, qq) = path.tractions(opx, omx);
         let (_, h) = path.pressure_and_hq(opx, omx);
         let x = position(opx, omx);
-        zones.push(if x >= c1 && x <= c2 {
+        zones.push(if (x >= c1 && x <= c2) || path.in_stuck_layer(opx, omx) {
             Zone::Stick
         } else if qq < 0.0 {
             Zone::SlipPositive
@@ -311,18 +311,27 @@ pub(super) fn solve(
     let mut path = ExactPath::new(&k, contact.tolerance(), contact.traction_tolerance())
         .map_err(|e| in_run("the normal load", e))?;
     let normal = step(&path, &at, unit);
-    // A probe: the state at Q* (the loading is path-independent, one solve) and the first
-    // unloading step, so that a refusal there (bp > 0: the corner structure, not built)
-    // comes before the first loading's steps are spent.
+    // A probe: the state at Q* (the loading is path-independent, one solve), the first
+    // unloading step, and the first reloading step from -Q* (the unloading is
+    // path-independent from Q*, one solve), so that a refusal there (bp > 0: the reloading's
+    // corner structure, not built) comes before the first loading's steps are spent.
     {
         let mut probe = path.clone();
         probe
             .load(q_amp)
             .map_err(|e| in_run("the first loading", e))?;
+        let mut reversed = probe.clone();
         let first_step = loads(q_amp, -q_amp, 2 * s)[0];
         probe
             .load(first_step)
             .map_err(|e| in_run(&format!("cycle 0, unloading to Q/P = {first_step}"), e))?;
+        reversed
+            .load(-q_amp)
+            .map_err(|e| in_run(&format!("cycle 0, unloading to Q/P = {}", -q_amp), e))?;
+        let back = loads(-q_amp, q_amp, 2 * s)[0];
+        reversed
+            .load(back)
+            .map_err(|e| in_run(&format!("cycle 0, reloading to Q/P = {back}"), e))?;
     }
     let mut first: Vec<Step> = Vec::new();
     for q in loads(0.0, q_amp, s) {

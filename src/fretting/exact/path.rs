@@ -21,11 +21,10 @@ use crate::problem::{Coupling, Profile};
 
 /// Where the exact solvers stop answering, for the messages of refused loads.
 const COVERAGE: &str = "the exact solver covers the normal load, monotonic loading from \
-    Q = 0 and the unloading and reloading branches where they keep one stick set with a slip \
-    zone at each end (at bp = 0 with their full-stick ranges); the corner structure that the ply's unloading above about -0.48 Q* \
-    and its reloading need (and strong coupling's unloading) is not built yet \
-    (docs/theory_tangential.md sections 13 and 15). CycleMethod::LcpHistory \
-    (ORTHOSLIP_CYCLE_METHOD_LCP_HISTORY) answers every load path";
+    Q = 0, the first unloading (at bp > 0 through its corner, docs/theory_tangential.md \
+    section 21) and the branches after it where they keep one stick set with a slip zone at \
+    each end (at bp = 0 with their full-stick ranges); the reloading's corner structure and \
+    a reversal from the first unloading's corner phase are not built yet (sections 15, 21)";
 
 /// The loaded state is the data of the unloading after a reversal, and is solved to at
 /// least these tolerances (c1 + c2, and the tractions in the norm (T1)): on the ply the
@@ -87,12 +86,15 @@ pub(crate) struct ExactPath {
     pub(crate) dissipated_error: f64,
 }
 
-/// The error `e` of the exact solver on `what`, with what the exact path covers.
+/// The error `e` of the exact solver on `what`, with the method that answers every load
+/// path first (a caller's fixed-size buffer keeps the message's start) and what the exact
+/// path covers.
 fn refused(what: &str, e: Error) -> Error {
     e.reworded(|m| {
         format!(
-            "CycleMethod::Exact (ORTHOSLIP_CYCLE_METHOD_EXACT): {what} is not answered ({m}); \
-             {COVERAGE}"
+            "CycleMethod::Exact (ORTHOSLIP_CYCLE_METHOD_EXACT): {what} is not answered; \
+             CycleMethod::LcpHistory (ORTHOSLIP_CYCLE_METHOD_LCP_HISTORY) answers every load \
+             path ({m}); {COVERAGE}"
         )
     })
 }
@@ -596,6 +598,19 @@ impl ExactPath {
             Branch::Loading { flip, .. } | Branch::Unloading { flip, .. } => *flip,
             // its getters read the data, in the contact's frame
             Branch::Stuck { .. } => false,
+        }
+    }
+
+    /// Whether the point x given by (1 + x, 1 - x) lies in the corner's layer stuck since the
+    /// branch's data (an answer of the corner's outer model, docs/theory_tangential.md
+    /// section 21): (-1, e2) in the branch's frame.
+    pub(crate) fn in_stuck_layer(&self, opx: f64, omx: f64) -> bool {
+        match &self.branch {
+            Branch::Unloading { u, flip, .. } => u
+                .level
+                .layer
+                .is_some_and(|e2| if *flip { omx < e2 } else { opx < e2 }),
+            _ => false,
         }
     }
 

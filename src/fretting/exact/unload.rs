@@ -23,7 +23,11 @@
 //! corner has that structure on the scale of 1e-6; [`Unloading::admissible`] refuses an
 //! answer whose leading zone slips backwards there. The five-zone pattern of that corner
 //! (section 19) is solved at fixed level by [`corner`], as is its outer model without the
-//! corner zone (section 20); neither is routed here yet.
+//! corner zone (section 20). Where the three-zone answer is refused or does not converge,
+//! [`unload`] answers with the outer model ([`outer_cold`], section 21), with its own
+//! admissibility check ([`Unloading::layer_check`]) and estimates; [`unload_from`] follows
+//! the outer model's branch from an answer of it and hands over to the three-zone pattern
+//! where the layer vanishes.
 
 pub(crate) mod corner;
 #[cfg(test)]
@@ -83,6 +87,17 @@ pub(crate) trait Start: Send + Sync {
     fn path(&self) -> Vec<f64>;
     /// +1 in the contact's frame, -1 when the state is seen mirrored ([`Mirror`]).
     fn sign(&self) -> f64;
+    /// Whether the corner x = -1 of this state is the loading's edge zone ((O1) of
+    /// docs/theory_tangential.md section 20: q = -mu p, p ~ (1 + x)^(-g) below its first
+    /// kink), the data for which the corner's outer model is derived and checked.
+    fn loaded_edge_at_corner(&self) -> bool {
+        false
+    }
+    /// Whether this state is an answer of the corner's outer model (a layer stuck since its
+    /// data, with the bonded field at -1 that no branch's bases carry as data yet).
+    fn corner_layer(&self) -> bool {
+        false
+    }
 }
 
 /// A shared state is the state it points to.
@@ -107,6 +122,12 @@ impl<T: Start + ?Sized> Start for Arc<T> {
     }
     fn sign(&self) -> f64 {
         (**self).sign()
+    }
+    fn loaded_edge_at_corner(&self) -> bool {
+        (**self).loaded_edge_at_corner()
+    }
+    fn corner_layer(&self) -> bool {
+        (**self).corner_layer()
     }
 }
 
@@ -158,6 +179,9 @@ impl Start for Monotonic {
     fn sign(&self) -> f64 {
         1.0
     }
+    fn loaded_edge_at_corner(&self) -> bool {
+        self.stick_set().0 > 0.0
+    }
 }
 
 /// H[q] + bq p of a solved state at x given by (1 + x, 1 - x).
@@ -203,6 +227,9 @@ impl Start for Mirror {
     fn sign(&self) -> f64 {
         -self.inner.sign()
     }
+    fn corner_layer(&self) -> bool {
+        self.inner.corner_layer()
+    }
 }
 
 /// An unloading state as the data of the next branch: its forcing is singular at a1 (the
@@ -219,12 +246,21 @@ impl<D: Start + ?Sized> Start for Unloading<D> {
     }
     fn kinks(&self) -> Vec<Kink> {
         let (wa, hi) = (self.level.wa, 2.0 - self.level.w2.unwrap_or(0.0));
-        let mut out = vec![Kink {
+        let mut out = Vec::new();
+        if let Some(e2) = self.level.layer {
+            out.push(Kink {
+                opx: e2,
+                slip_left: false,
+                seen_from_right: true,
+                seen_from_left: true,
+            });
+        }
+        out.push(Kink {
             opx: wa,
             slip_left: true,
             seen_from_right: false,
             seen_from_left: true,
-        }];
+        });
         out.extend(
             self.loaded
                 .kinks()
@@ -245,7 +281,8 @@ impl<D: Start + ?Sized> Start for Unloading<D> {
         self.level.state.tractions(opx, omx)
     }
     fn forcing(&self, opx: f64, omx: f64) -> f64 {
-        if opx > self.level.wa && omx > self.level.w2.unwrap_or(0.0) {
+        let stuck = opx > self.level.wa && omx > self.level.w2.unwrap_or(0.0);
+        if stuck || self.level.layer.is_some_and(|e2| opx < e2) {
             self.loaded.forcing(opx, omx)
         } else {
             forcing_of(&self.level.state, self.loaded.coupling().bq, opx, omx)
@@ -258,6 +295,9 @@ impl<D: Start + ?Sized> Start for Unloading<D> {
     }
     fn sign(&self) -> f64 {
         self.loaded.sign()
+    }
+    fn corner_layer(&self) -> bool {
+        self.level.layer.is_some()
     }
 }
 
@@ -380,6 +420,9 @@ pub(crate) struct Level {
     /// 1 + a1 and 1 - a2 (None: no trailing edge zone, bp = 0).
     pub(crate) wa: f64,
     pub(crate) w2: Option<f64>,
+    /// 1 + e2 when the answer is the corner's outer model (docs/theory_tangential.md
+    /// sections 20-21): the layer (-1, e2) stuck since Q*, the leading zone (e2, a1).
+    pub(crate) layer: Option<f64>,
     pub(crate) state: Solved,
     /// The last Newton step's size in a1 and a2 (its own error bound).
     pub(crate) step: f64,
@@ -428,6 +471,7 @@ pub(crate) fn unload_level<D: Start + ?Sized>(
         return Ok(Level {
             wa: b,
             w2: None,
+            layer: None,
             state: sb,
             step,
             solves,
@@ -464,6 +508,7 @@ pub(crate) fn unload_level<D: Start + ?Sized>(
     Ok(Level {
         wa: la.exp(),
         w2: Some(lw.exp()),
+        layer: None,
         state,
         step,
         solves,
@@ -475,6 +520,160 @@ pub(crate) fn unload_level<D: Start + ?Sized>(
 /// fails (section 13: at b* = 0.9 the leading zone's slip is negative from the corner to
 /// 0.01 .. 0.5 of its width, at the ply at Q = 0 over all of it), down to 1e-8 of it.
 pub(crate) const CHECK_FRACTIONS: [f64; 9] = [1e-8, 1e-6, 1e-4, 1e-2, 0.1, 0.3, 0.5, 0.7, 0.9];
+
+/// The first level of the outer model's ladder: the ply's runs of docs/theory_tangential.md
+/// section 20 start there (6 bonded powers, B's series to 1.6e-8).
+const OUTER_FIRST: usize = 3;
+
+/// A bound on e1/u0, the corner zone's width over the outer field's first zero of
+/// q + mu p below e2 (the inner problem's constant kappa, docs/theory_tangential.md sections
+/// 20-21), measured against the five-zone solver at mu/delta = 1:
+///
+/// | b* | 0.9 | 0.85 | 0.81 | 0.77 | 0.75 | 0.74 |
+/// |---|---|---|---|---|---|---|
+/// | e1/u0 | 5.93 | 5.92 | 5.88 | 5.82 | 5.79 | 5.77 |
+///
+/// The ends the outer model leaves out move by 0.51-0.57 e1 in all (the same table), so
+/// KAPPA u0 bounds the ends' model error where e1/u0 stays below 6.
+pub(crate) const KAPPA: f64 = 6.0;
+
+/// Whether [`unload`] may answer with the corner's outer model: bp > 0 and the data's corner
+/// the loaded edge zone ((O1)).
+fn outer_applies<D: Start + ?Sized>(m: &D) -> bool {
+    m.coupling().bp > 0.0 && m.loaded_edge_at_corner()
+}
+
+/// The outer model's march to the start at Q/P = `qp` (section 21): from the limit pattern
+/// of the first step (section 19's width laws 1 + e2 = 0.08 w1*, a1 = c1* + 0.05 w1*,
+/// 1 - a2 = 0.9 w1*, measured there for Q -> Q*) down the branch at level [`OUTER_FIRST`]
+/// to `qp`, each load from the ends of the two before extrapolated in their logarithms,
+/// steps of [`MARCH_STEP`] Q* at first, doubled after a success (up to [`MAX_MARCH_STEP`]
+/// Q*) and halved after a failure (down to 1e-3 Q*); then the ladder at `qp` from there.
+pub(crate) fn outer_cold<D: Start + ?Sized>(
+    m: &Arc<D>,
+    qp: f64,
+    tol: f64,
+    traction_tol: f64,
+) -> Result<Unloading<D>> {
+    let w1 = match m.kinks().first() {
+        Some(c) if c.slip_left => c.opx,
+        _ => {
+            return Err(Error::InvalidArgument(
+                "exact corner (outer): the data has no edge zone at -1".into(),
+            ));
+        }
+    };
+    let q_star = m.qp();
+    let mut x = [0.08 * w1, 1.05 * w1, 0.9 * w1];
+    // the load reached, the step, and the answer before (for the predictor)
+    let (mut t, mut h) = (q_star, MARCH_STEP * q_star);
+    let mut before: Option<(f64, corner::OuterEnds)> = None;
+    let mut reached = None;
+    while t > qp {
+        let next = (t - h).max(qp);
+        // the ends extrapolated in their logarithms from the two answers before
+        let guess = before.map_or(x, |(tb, xb)| {
+            let r = (next - t) / (t - tb);
+            std::array::from_fn(|i| x[i] * (x[i] / xb[i]).powf(r))
+        });
+        match corner::outer_level(&**m, guess, next, OUTER_FIRST, 1e-8, &mut None) {
+            Ok(o) => {
+                before = Some((t, x));
+                (t, x) = (next, o.x);
+                h = (2.0 * h).min(MAX_MARCH_STEP * q_star);
+                reached = Some(o);
+            }
+            Err(e) => {
+                h *= 0.5;
+                if h < 1e-3 * q_star {
+                    return Err(e.reworded(|msg| {
+                        format!("marching the outer model down to Q/P = {qp}, at {next}: {msg}")
+                    }));
+                }
+            }
+        }
+    }
+    // the corner zone's share at level 3 already above the tolerance: no ladder (at b* = 0.9
+    // it is 8e-5, section 21)
+    if let Some(o) = reached {
+        let u0 = corner::first_zero(&o.state, m.coupling().mu, 0.5 * x[0], 0.95).unwrap_or(0.0);
+        if KAPPA * u0 > tol {
+            return Err(Error::ToleranceNotMet {
+                estimate: KAPPA * u0,
+                tolerance: tol,
+                detail: format!(
+                    "the ends with the corner zone, e1 <= {:.2e} (level {OUTER_FIRST})",
+                    KAPPA * u0
+                ),
+            });
+        }
+    }
+    outer_answer(m, qp, tol, traction_tol, x)
+}
+
+/// The first and the largest step of [`outer_cold`]'s march, in units of Q*: the ply's
+/// branch was followed at level 4 in steps of 0.2 Q* down to -0.4 Q*, then 0.05 and 0.01
+/// (docs/theory_tangential.md section 20); the first step is the first unloading step of
+/// that run (0.9 Q*), where the width laws were measured.
+const MARCH_STEP: f64 = 0.1;
+const MAX_MARCH_STEP: f64 = 0.2;
+
+/// The outer model's answer at Q/P = `qp` from the ends `start` ([`corner::outer`]'s
+/// ladder), checked ([`Unloading::admissible`], with the layer's margin), its estimates
+/// raised by the terms of the corner zone it leaves out: [`KAPPA`] u0 for the ends and
+/// 6 (1 + delta) |B| sqrt(KAPPA u0) for the tractions in (T1) (section 21), delta =
+/// sqrt(bq/bp); ToleranceNotMet where those exceed the tolerances.
+fn outer_answer<D: Start + ?Sized>(
+    m: &Arc<D>,
+    qp: f64,
+    tol: f64,
+    traction_tol: f64,
+    start: corner::OuterEnds,
+) -> Result<Unloading<D>> {
+    let c = corner::outer(&**m, qp, tol, traction_tol, start, OUTER_FIRST)?;
+    let [e2, wa, w2] = c.level.x;
+    let largest = c.level.x.iter().fold(0.0f64, |a, v| a.max(*v));
+    let mut u = Unloading {
+        loaded: m.clone(),
+        qp,
+        level: Level {
+            wa,
+            w2: Some(w2),
+            layer: Some(e2),
+            step: c.level.step * largest,
+            solves: c.level.solves,
+            state: c.level.state,
+        },
+        c_error: c.c_error,
+        traction_error: c.traction_error,
+        levels: c.levels,
+        solves: c.solves,
+        trace: c.trace,
+    };
+    u.admissible()?;
+    let (u0, b) = u.layer_check()?;
+    let k = m.coupling();
+    let e1 = KAPPA * u0;
+    u.c_error += e1;
+    u.traction_error += 6.0 * (1.0 + (k.bq / k.bp).sqrt()) * b * e1.sqrt();
+    for (estimate, tolerance, what) in [
+        (u.c_error, tol, "ends"),
+        (u.traction_error, traction_tol, "tractions"),
+    ] {
+        if estimate > tolerance {
+            return Err(Error::ToleranceNotMet {
+                estimate,
+                tolerance,
+                detail: format!("the {what} with the corner zone, e1 <= {e1:.2e}"),
+            });
+        }
+    }
+    Ok(u)
+}
+
+/// Fractions of the layer's width 1 + e2 at which [`Unloading::layer_check`] reads p and
+/// q: from e2 towards the corner, log-spaced below 0.1.
+pub(crate) const LAYER_FRACTIONS: [f64; 9] = [0.99, 0.9, 0.5, 0.1, 1e-2, 1e-4, 1e-6, 1e-8, 1e-10];
 
 /// (offset of a point from its contact end, slip since Q* there) along a slip zone.
 pub(crate) type Slips = Vec<(f64, f64)>;
@@ -501,6 +700,14 @@ pub(crate) struct Unloading<D: Start + ?Sized = Monotonic> {
 /// Q* and unloaded in one step each); then, for bp > 0, w2 from the first sign change of the
 /// border value at a2, sigma_0 + sigma_1, at level 1 scanning w2 = 0.3, 0.03, ... down to
 /// [`W1_MIN`] (as the loading's scan of w1).
+///
+/// Where that answer is refused or does not converge and the data's corner is the loaded
+/// edge zone with bp > 0 (the corner structure of docs/theory_tangential.md section 19), the
+/// answer is the corner's outer model instead ([`outer_cold`], section 21), with its own
+/// admissibility check and estimates; if that fails too, the three-zone refusal is returned
+/// (its status) with the outer model's reason appended (a ToleranceNotMet of the outer
+/// model, where the corner zone it leaves out exceeds the tolerance, reads "tolerance not
+/// met" there).
 pub(crate) fn unload<D: Start + ?Sized>(
     m: &Arc<D>,
     qp: f64,
@@ -508,6 +715,25 @@ pub(crate) fn unload<D: Start + ?Sized>(
     traction_tol: f64,
 ) -> Result<Unloading<D>> {
     check_load(&**m, qp)?;
+    match three_zone(m, qp, tol, traction_tol) {
+        Err(e @ (Error::NoAdmissibleSolution(_) | Error::NoConvergence(_)))
+            if outer_applies(&**m) =>
+        {
+            outer_cold(m, qp, tol, traction_tol).map_err(|o| {
+                e.reworded(|msg| format!("{msg}; the corner's outer model (section 21): {o}"))
+            })
+        }
+        other => other,
+    }
+}
+
+/// The three-zone answer of [`unload`] (its grid start, scan of w2, ladder and check).
+fn three_zone<D: Start + ?Sized>(
+    m: &Arc<D>,
+    qp: f64,
+    tol: f64,
+    traction_tol: f64,
+) -> Result<Unloading<D>> {
     let k = m.coupling();
     let mut solves = 0;
     let wa0 = {
@@ -545,6 +771,14 @@ pub(crate) fn unload<D: Start + ?Sized>(
 /// Q/P must lie on the branch: -mu < Q/P < Q*/P, and below the first-slip load when bp = 0.
 fn check_load<D: Start + ?Sized>(m: &D, qp: f64) -> Result<()> {
     let (k, q_star) = (m.coupling(), m.qp());
+    if m.corner_layer() {
+        return Err(Error::InvalidArgument(
+            "exact unloading: the data is an answer of the corner's outer model (a layer \
+             stuck at -1 with the bonded field there, docs/theory_tangential.md section 21), \
+             which no branch takes as data yet"
+                .into(),
+        ));
+    }
     if !(qp < q_star && qp > -k.mu) {
         return Err(Error::InvalidArgument(format!(
             "exact unloading: needs -mu < Q/P < Q*/P (Q/P = {qp}, Q*/P = {q_star}, mu = {})",
@@ -578,6 +812,17 @@ pub(crate) fn unload_from<D: Start + ?Sized>(
     let m = &prev.loaded;
     check_load(&**m, qp)?;
     let (wa, w2) = (prev.level.wa, prev.level.w2);
+    if let (Some(e2), Some(w2)) = (prev.level.layer, w2) {
+        // the outer model from prev's ends; where it fails (the layer gone), the three-zone
+        // pattern from prev's stick set: the hand-over (section 21), then the cold start
+        return match outer_answer(m, qp, tol, traction_tol, [e2, wa, w2]) {
+            Ok(u) => Ok(u),
+            Err(_) => match ladder(m, qp, tol, traction_tol, (wa, Some(w2)), 1, 0) {
+                Ok(u) => Ok(u),
+                Err(_) => unload(m, qp, tol, traction_tol),
+            },
+        };
+    }
     let start = match before {
         Some(b) if b.qp != prev.qp => {
             let r = (qp - prev.qp) / (prev.qp - b.qp);
@@ -686,7 +931,52 @@ impl<D: Start + ?Sized> Unloading<D> {
                 self.qp
             )));
         }
+        if self.level.layer.is_some() {
+            self.layer_check()?;
+        }
         Ok(())
+    }
+
+    /// The corner's stuck layer (-1, e2) of an outer-model answer (docs/theory_tangential.md
+    /// section 21): p > 0 and |q| <= mu p at the fractions [`LAYER_FRACTIONS`] of 1 + e2
+    /// that lie above u0, the outer field's first zero of q + mu p ((O4)) below e2/2, where
+    /// the corner zone sits (e1 ~ KAPPA u0; found by [`corner::first_zero`], scanning by
+    /// factors 0.95); Err(NoAdmissibleSolution) otherwise. Returns u0 and the bonded
+    /// amplitude |B| = |f| u^(1/2), f = (p - p*) + i (q - q*)/delta, read at u = INNER e2/2
+    /// (inside the corner zone's columns, where f = u^beta B(u) with B's series converged).
+    pub(crate) fn layer_check(&self) -> Result<(f64, f64)> {
+        let Some(e2) = self.level.layer else {
+            return Ok((0.0, 0.0));
+        };
+        let k = self.loaded.coupling();
+        let st = &self.level.state;
+        let refuse = |what: String| {
+            Error::NoAdmissibleSolution(format!(
+                "exact corner (outer) at Q/P = {}: the layer (-1, {}) stuck since Q* {what} \
+                 (docs/theory_tangential.md section 21)",
+                self.qp,
+                e2 - 1.0
+            ))
+        };
+        let u0 = corner::first_zero(st, k.mu, 0.5 * e2, 0.95).unwrap_or(0.0);
+        for f in LAYER_FRACTIONS {
+            let o = f * e2;
+            if o <= u0 {
+                break;
+            }
+            let (p, q) = st.tractions(o, 2.0 - o);
+            if !(p > 0.0 && q.abs() <= k.mu * p) {
+                return Err(refuse(format!(
+                    "breaks |q| <= mu p at 1 + x = {o:e} (p = {p:e}, q = {q:e}; the outer \
+                     field's first zero of q + mu p lies at {u0:e})"
+                )));
+            }
+        }
+        let u = 0.5 * corner::INNER * e2;
+        let (p, q) = st.tractions(u, 2.0 - u);
+        let (ps, qs) = self.loaded.tractions(u, 2.0 - u);
+        let b = (p - ps).hypot((q - qs) / (k.bq / k.bp).sqrt()) * u.sqrt();
+        Ok((u0, b))
     }
 
     /// (a1, a2), the stick set.
@@ -708,10 +998,34 @@ impl<D: Start + ?Sized> Unloading<D> {
 
     /// The slip since Q* at x (per pi B P), integrated from the nearer stick end by
     /// Gauss-Legendre graded towards both ends of each piece (the loaded state's kinks inside
-    /// the leading zone are breakpoints too); 0 on the stick set. The trailing zone is
-    /// integrated in 1 - x, so that points within rounding of +1 keep their offsets.
+    /// the leading zone are breakpoints too); 0 on the stick set and on the corner's stuck
+    /// layer (its corner zone, e1 ~ 1e-19 at the ply, is the inner problem's). The trailing
+    /// zone is integrated in 1 - x, so that points within rounding of +1 keep their offsets.
+    /// Between the layer and the stick set the leading zone is integrated from the nearer of
+    /// its stick ends e2 and a1 (the slip vanishes at both, (C2)).
     pub(crate) fn slip(&self, opx: f64, omx: f64) -> f64 {
         let (wa, w2) = (self.level.wa, self.level.w2.unwrap_or(0.0));
+        if let Some(e2) = self.level.layer
+            && opx < wa
+        {
+            if opx <= e2 {
+                return 0.0;
+            }
+            if opx - e2 < wa - opx {
+                // s(x) = int_{e2}^x slope
+                let mut cuts = vec![e2, opx];
+                for c in self.loaded.kinks() {
+                    if c.opx > e2 && c.opx < opx {
+                        cuts.push(c.opx);
+                    }
+                }
+                cuts.sort_by(|a, b| a.total_cmp(b));
+                return cuts
+                    .windows(2)
+                    .map(|w| graded(w[0], w[1], &|o| self.slip_slope(o, 2.0 - o)))
+                    .sum::<f64>();
+            }
+        }
         if opx < wa {
             // s(x) = -int_x^{a1} slope, in 1 + x
             let mut cuts = vec![opx, wa];
@@ -739,6 +1053,24 @@ impl<D: Start + ?Sized> Unloading<D> {
     /// the second < 0 (q = +mu p).
     pub(crate) fn zone_slips(&self) -> (Slips, Slips) {
         let (wa, w2) = (self.level.wa, self.level.w2.unwrap_or(0.0));
+        let trailing = || {
+            CHECK_FRACTIONS
+                .iter()
+                .map(|f| (f * w2, self.slip(2.0 - f * w2, f * w2)))
+                .collect()
+        };
+        if let Some(e2) = self.level.layer {
+            // the leading zone (e2, a1), at the fractions of its width from e2, each point
+            // from its nearer stick end
+            let leading = CHECK_FRACTIONS
+                .iter()
+                .map(|f| {
+                    let o = e2 + f * (wa - e2);
+                    (o, self.slip(o, 2.0 - o))
+                })
+                .collect();
+            return (leading, trailing());
+        }
         let mut marks: Vec<f64> = CHECK_FRACTIONS.iter().map(|f| f * wa).collect();
         for c in self.loaded.kinks() {
             if c.opx < wa {
@@ -755,14 +1087,7 @@ impl<D: Start + ?Sized> Unloading<D> {
                 leading.push((w[1], running));
             }
         }
-        let trailing = if w2 > 0.0 {
-            CHECK_FRACTIONS
-                .iter()
-                .map(|f| (f * w2, self.slip(2.0 - f * w2, f * w2)))
-                .collect()
-        } else {
-            Vec::new()
-        };
+        let trailing = if w2 > 0.0 { trailing() } else { Vec::new() };
         (leading, trailing)
     }
 
