@@ -1184,8 +1184,12 @@ fn outer_model_down_the_ply_branch() {
 /// section 21): prints, per load, the ends' and the tractions' distances to levels L + 1
 /// and L + 2 (each from the answer) as fractions of the ladder's estimates. The measured
 /// table behind [`corner::OUTER_TRACTION_FACTOR`].
+/// A measurement, not a check (the `measure` feature only, kept out of the tiers):
+/// `cargo test --release --features measure --lib measure_outer_estimates -- --ignored --nocapture`
+/// (about 4 min: five ladders on the ply and two levels above each).
+#[cfg(feature = "measure")]
 #[test]
-#[ignore = "slow: about 4 min, five ladders on the ply and two levels above each"]
+#[ignore = "measurement"]
 fn measure_outer_estimates() {
     let k = ply();
     let q_star = 0.6 * k.mu;
