@@ -750,19 +750,25 @@ mod clock;
 mod tests {
     use super::*;
 
+    /// A fixed pseudo-random sequence, uniform on [-1/2, 1/2) (a linear congruential
+    /// generator from `seed`).
+    fn uniform(seed: u64) -> impl FnMut() -> f64 {
+        let mut state = seed;
+        move || {
+            state = state
+                .wrapping_mul(6364136223846793005)
+                .wrapping_add(1442695040888963407);
+            (state >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+        }
+    }
+
     /// The nested QR against faer's column-pivoted QR on both column sets of a random
     /// overdetermined system, and on a rank-deficient one (a repeated column) by residual.
     #[test]
     fn nested_qr_matches_faer() {
         let (m, n, inner) = (60, 20, 13);
         // a fixed pseudo-random matrix (linear congruential)
-        let mut state: u64 = 12345;
-        let mut next = || {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (state >> 11) as f64 / (1u64 << 53) as f64 - 0.5
-        };
+        let mut next = uniform(12345);
         let a: Vec<f64> = (0..m * n).map(|_| next()).collect();
         let b: Vec<f64> = (0..m).map(|_| next()).collect();
         let [xi, xf] = nested_qr_solve(ColMajor::from_row_major(&a, n), &b, inner);
@@ -818,13 +824,7 @@ mod tests {
     /// of the spectral frames' shapes with every padding remainder (m mod 8).
     #[test]
     fn nested_qr_avx_is_the_baseline_to_the_bit() {
-        let mut state: u64 = 99;
-        let mut next = || {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (state >> 11) as f64 / (1u64 << 53) as f64 - 0.5
-        };
+        let mut next = uniform(99);
         for (m, n, inner) in [
             (59, 37, 28),
             (60, 37, 30),
@@ -854,13 +854,7 @@ mod tests {
     #[test]
     #[ignore = "measurement"]
     fn own_qr_crossover() {
-        let mut state: u64 = 777;
-        let mut next = move || {
-            state = state
-                .wrapping_mul(6364136223846793005)
-                .wrapping_add(1442695040888963407);
-            (state >> 11) as f64 / (1u64 << 53) as f64 - 0.5
-        };
+        let mut next = uniform(777);
         // rows per column: the spectral systems' 1.8, and the 2.8 they had before
         for (per, n) in [1.8, 2.8]
             .into_iter()

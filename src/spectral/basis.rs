@@ -53,11 +53,9 @@ impl Family {
         }
     }
 
-    /// The transforms at y; a Jacobi family takes its weight's factors at y where given
-    /// ([`Block::factors`]).
-    fn transforms(&self, y: Point, factors: Option<(f64, f64)>, out: &mut [f64]) {
+    fn transforms(&self, y: Point, out: &mut [f64]) {
         match self {
-            Family::Jacobi(f) => f.transforms_with(y, factors, out),
+            Family::Jacobi(f) => f.transforms_with(y, None, out),
             Family::Quotient(f) => f.transforms(y, out),
         }
     }
@@ -237,31 +235,15 @@ impl Block {
 
     /// The columns' transforms T at y (off the ends) into out[..len].
     pub(crate) fn transforms(&self, y: Point, buf: &mut [f64], out: &mut [f64]) {
-        self.transforms_with(y, None, buf, out);
-    }
-
-    /// [`Block::transforms`] with the weight's factors at y given ([`Block::factors`]).
-    pub(crate) fn transforms_with(
-        &self,
-        y: Point,
-        factors: Option<(f64, f64)>,
-        buf: &mut [f64],
-        out: &mut [f64],
-    ) {
-        self.family_transforms(y, factors, buf);
+        let n = self.family.len();
+        self.family.transforms(y, &mut buf[..n]);
         self.transforms_from(y, buf, out);
     }
 
-    /// The family's transforms T_k at y, k < [`Block::scratch`], into buf: shared by the
-    /// blocks of one family ([`Block::same_family`]); `factors` as for [`Block::values_with`].
-    pub(crate) fn family_transforms(&self, y: Point, factors: Option<(f64, f64)>, buf: &mut [f64]) {
-        let n = self.family.len();
-        self.family.transforms(y, factors, &mut buf[..n]);
-    }
-
-    /// [`Block::family_transforms`] at each of `points` with its factors, point i's into
-    /// out[i s..(i + 1) s], s = [`Block::scratch`] (the backward recurrences of several
-    /// points together, [`JacobiFamily::transforms_many`]; the same values to the bit).
+    /// The family's transforms T_k, k < s = [`Block::scratch`], at each of `points` with its
+    /// weight factors ([`Block::factors`]; a Jacobi family's T_0 takes them at a point
+    /// inside), point i's into out[i s..(i + 1) s]: the backward recurrences of several points
+    /// together ([`JacobiFamily::transforms_many`]; the same values to the bit).
     pub(crate) fn family_transforms_many(
         &self,
         points: &[Point],
