@@ -331,7 +331,9 @@ impl Elimination {
             let out = reduced.col_mut(jj);
             if let [p0, p1, p2] = pivot_cols[..] {
                 // three constraints (the spectral frames'): one pass, the same sums in the
-                // same order
+                // same order (kappa = 0.4 at mu = 1: 1.438M to 1.420M instructions per
+                // answer; later, one pass over any number of pivots, the pivots in the inner
+                // loop, took 1.517M against this one's 1.404M)
                 let (k0, k1, k2) = (cons[0].0[j], cons[1].0[j], cons[2].0[j]);
                 for i in 0..rows {
                     let s = 0.0 + p0[i] * k0 + p1[i] * k1 + p2[i] * k2;
