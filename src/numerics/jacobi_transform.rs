@@ -265,19 +265,26 @@ impl JacobiFamily {
     /// [`JacobiFamily::transforms`] with the weight's factors at y where the caller has them
     /// ([`JacobiFamily::t0_with`]).
     pub(crate) fn transforms_with(&self, p: Point, factors: Option<(f64, f64)>, out: &mut [f64]) {
-        let n = self.n;
-        let out = &mut out[..n];
+        let out = &mut out[..self.n];
+        if let Some(m) = self.head(p, factors, out) {
+            let t0 = out[0];
+            self.backward(&[(p, m, 0, t0)], out);
+        }
+    }
+
+    /// T_0 at y into out[0], and the rest of the transforms by the forward recurrence where
+    /// it applies; else the start of the backward recurrence that gives them
+    /// ([`JacobiFamily::miller_start`]).
+    fn head(&self, p: Point, factors: Option<(f64, f64)>, out: &mut [f64]) -> Option<usize> {
         out[0] = self.t0_with(p, factors);
-        if n == 1 {
-            return;
+        if self.n == 1 {
+            return None;
         }
-        match self.miller_start(p) {
-            None => self.forward(p, out),
-            Some(m) => {
-                let t0 = out[0];
-                self.backward(&[(p, m, 0, t0)], out);
-            }
+        let m = self.miller_start(p);
+        if m.is_none() {
+            self.forward(p, out);
         }
+        m
     }
 
     /// [`JacobiFamily::transforms_with`] at each of `points` with its `factors`, point i's
@@ -295,18 +302,11 @@ impl JacobiFamily {
         let mut lanes: Vec<(Point, usize, usize, f64)> = Vec::with_capacity(MILLER_LANES);
         for (i, (&p, &f)) in points.iter().zip(factors).enumerate() {
             let row = &mut out[i * n..(i + 1) * n];
-            row[0] = self.t0_with(p, f);
-            if n == 1 {
-                continue;
-            }
-            match self.miller_start(p) {
-                None => self.forward(p, row),
-                Some(m) => {
-                    lanes.push((p, m, i * n, row[0]));
-                    if lanes.len() == MILLER_LANES {
-                        self.backward(&lanes, out);
-                        lanes.clear();
-                    }
+            if let Some(m) = self.head(p, f, row) {
+                lanes.push((p, m, i * n, row[0]));
+                if lanes.len() == MILLER_LANES {
+                    self.backward(&lanes, out);
+                    lanes.clear();
                 }
             }
         }
