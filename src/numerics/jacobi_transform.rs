@@ -262,8 +262,8 @@ impl JacobiFamily {
         self.transforms_with(p, None, out);
     }
 
-    /// [`JacobiFamily::transforms`] with the weight's factors at y where the caller has them
-    /// ([`JacobiFamily::t0_with`]).
+    /// T_k(y), k < n (module documentation), y off the interval ends, with the weight's
+    /// factors at y where the caller has them ([`JacobiFamily::t0_with`]).
     pub(crate) fn transforms_with(&self, p: Point, factors: Option<(f64, f64)>, out: &mut [f64]) {
         let out = &mut out[..self.n];
         if let Some(m) = self.head(p, factors, out) {
@@ -272,7 +272,7 @@ impl JacobiFamily {
         }
     }
 
-    /// T_0 at y into out[0], and the rest of the transforms by the forward recurrence where
+    /// T_0 at y into the first entry of `out`, and the rest of the transforms by the forward recurrence where
     /// it applies; else the start of the backward recurrence that gives them
     /// ([`JacobiFamily::miller_start`]).
     fn head(&self, p: Point, factors: Option<(f64, f64)>, out: &mut [f64]) -> Option<usize> {
@@ -328,8 +328,9 @@ impl JacobiFamily {
         }
     }
 
-    /// The forward recurrence from T_0 in out[0]: T_1 from the inhomogeneous step, then
-    /// T_(k+1) = A_k T_k - B_k T_(k-1) with the divisions by off[k] as multiplications (one
+    /// The forward recurrence from T_0 in the first entry of `out`: T_1 from the
+    /// inhomogeneous step, then T_(k+1) = A_k T_k - B_k T_(k-1) with the divisions by
+    /// `off[k]` as multiplications (one
     /// fused step per degree on the dependency chain).
     fn forward(&self, p: Point, out: &mut [f64]) {
         let (n, r) = (self.n, &self.rec);

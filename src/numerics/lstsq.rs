@@ -185,7 +185,7 @@ pub(crate) fn constrained_sized(
 }
 
 /// [`constrained`] on the columns of A taken in the order `order` (column j of the problem
-/// is A's column order[j]), with the reduced least squares by [`nested_qr_solve`]'s pivoted
+/// is A's column `order[j]`), with the reduced least squares by [`nested_qr_solve`]'s pivoted
 /// QR (one group) where `own`, else by faer's.
 fn constrained_by(
     a: &ColMajor,

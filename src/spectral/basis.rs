@@ -261,8 +261,8 @@ impl Block {
         }
     }
 
-    /// The columns' transforms at y into out[..len] from the family's, `family` (from
-    /// [`Block::family_transforms`] at the same y, of this block or one of the same family).
+    /// The columns' transforms at y into out[..len] from the family's transforms `family` at
+    /// the same y (of this block or of one with the same family, [`Block::same_family`]).
     pub(crate) fn transforms_from(&self, y: Point, family: &[f64], out: &mut [f64]) {
         let t0 = family[0];
         for (o, &k) in out.iter_mut().zip(&self.degrees) {

@@ -579,7 +579,8 @@ impl Basis {
         self.hilbert_row_from(p, &rows.at(0), hp, hq, scratch);
     }
 
-    /// [`Basis::hilbert_row`] from the families' transforms at the point ([`FamilyRows`]).
+    /// The columns' H\[p\] and H\[q\] at a point from the families' transforms there
+    /// ([`FamilyRows`]); `scratch` of length [`Basis::scratch_len`].
     fn hilbert_row_from(
         &self,
         p: &Pt,
@@ -632,7 +633,8 @@ impl Basis {
         }
     }
 
-    /// Length of the scratch buffer of [`Basis::hilbert_row`].
+    /// Length of the scratch buffer of the rows' evaluations ([`Basis::tractions_row`],
+    /// [`Basis::hilbert_row_from`]).
     fn scratch_len(&self) -> usize {
         self.scratch + self.len()
     }
