@@ -460,22 +460,49 @@ const SENSITIVITY_BOUNDS: [SensitivityBand; 11] = [
 ];
 
 /// Upper bounds on the tractions' move per unit of c, (int |dp|, int |dq~|) / dc =
-/// rate / (c (1 - c)), where c < [`SMALL_C`]: the move per lc falls with c, while the
-/// table's uncertainty in lc, its bound on c over c (1 - c), grows as 1/c. Measured as for
-/// [`SENSITIVITY_BOUNDS`], the largest per band of c (b* = 0.02 .. 0.99):
+/// rate / (c (1 - c)), where c < [`SMALL_C`]: per band of b* (b* below, then the bounds for
+/// c below 0.01, 0.1 and [`SMALL_C`]). A stick zone of size c moves the tractions mostly
+/// within a few c of it, so the move per lc falls like c, while the table's uncertainty in
+/// lc, its bound on c over c (1 - c), grows as 1/c; the move per c is nearly constant in c
+/// and grows with b*, so a bound per band of b* and of c is 5-40 times tighter than
+/// [`SENSITIVITY_BOUNDS`] alone at small and mid-sized stick zones. Measured as
+/// [`First::measured_at`] measures it, at levels 1, 2 and 3, on the 161 x 161 grid of the
+/// table's coordinates (`tests::measure_rate_per_c_by_b`, c from 1e-4 up; below, the move
+/// per lc is level 1's own change, [`RATE_FLOOR`]), the largest per band (p, q~):
 ///
-/// | c | points | p | q~ |
+/// | b* | c < 0.01 | 0.01 .. 0.1 | 0.1 .. 0.3 |
 /// |---|---|---|---|
-/// | 4e-5 .. 3e-4 | 14 | 12.6 | 15.0 |
-/// | 3e-4 .. 1e-3 | 39 | 2.38 | 2.62 |
-/// | 1e-3 .. 3e-3 | 12 | 19.4 | 23.6 |
-/// | 3e-3 .. 0.01 | 49 | 26.3 | 34.6 |
-/// | 0.01 .. 0.03 | 31 | 41.5 | 63.3 |
+/// | 0 .. 0.1 | 1.28e-3, 8.90e-3 | 2.34e-3, 1.45e-2 | 3.56e-3, 2.19e-2 |
+/// | 0.1 .. 0.2 | 7.19e-3, 2.18e-2 | 1.31e-2, 3.57e-2 | 1.98e-2, 5.41e-2 |
+/// | 0.2 .. 0.3 | 1.65e-2, 3.47e-2 | 3.00e-2, 5.74e-2 | 4.52e-2, 8.75e-2 |
+/// | 0.3 .. 0.4 | 3.33e-2, 5.34e-2 | 6.03e-2, 8.96e-2 | 9.00e-2, 0.138 |
+/// | 0.4 .. 0.5 | 6.25e-2, 8.22e-2 | 0.112, 0.141 | 0.165, 0.218 |
+/// | 0.5 .. 0.6 | 0.112, 0.129 | 0.199, 0.226 | 0.326, 0.415 |
+/// | 0.6 .. 0.7 | 0.197, 0.210 | 0.344, 0.374 | 0.539, 0.686 |
+/// | 0.7 .. 0.8 | 0.395, 0.408 | 0.742, 0.859 | 1.06, 1.54 |
+/// | 0.8 .. 0.9 | 1.24, 1.37 | 2.00, 2.82 | 2.68, 6.55 |
+/// | 0.9 .. 0.95 | 2.86, 3.58 | 4.80, 10.5 | 4.93, 21.7 |
+/// | 0.95 .. 0.99 | 20.1, 41.2 | 22.1, 94.4 | 9.88, 47.2 |
 ///
-/// The bounds are twice the largest below 0.01. (The carbon ply at mu = 0.1, c = 4.8e-5,
-/// measured 8e-3 per unit of c; with the bound per b* alone its tractions to 1e-10 measured
-/// the slope and the move, one more solve.)
-const RATE_PER_C: (f64, f64) = (55.0, 70.0);
+/// (6-1041 points per cell, 16,954 solves in all.) The bounds are twice the largest. The grid
+/// of `tests::sensitivity_bounds_hold` (37 x 37, none of its nodes on this one) checks them.
+/// (With [`SENSITIVITY_BOUNDS`] alone from c = 0.01 up, and one pair, (55, 70), below, the
+/// bound on the move at tractions to 1e-10 failed b* = 0.318, c = 0.020 (delta = 10,
+/// mu = 1), which then measured the slope and the move, one more solve, and b* = 0.448,
+/// c = 0.124 (kappa = 0.4, mu = 0.3), which solved a second pair.)
+const RATE_PER_C: [(f64, [(f64, f64); 3]); 11] = [
+    (0.1, [(2.6e-3, 1.8e-2), (4.7e-3, 2.9e-2), (7.2e-3, 4.4e-2)]),
+    (0.2, [(1.5e-2, 4.4e-2), (2.7e-2, 7.2e-2), (4.0e-2, 0.11)]),
+    (0.3, [(3.3e-2, 7.0e-2), (6.0e-2, 0.115), (9.1e-2, 0.175)]),
+    (0.4, [(6.7e-2, 0.107), (0.121, 0.18), (0.18, 0.276)]),
+    (0.5, [(0.125, 0.165), (0.225, 0.282), (0.33, 0.436)]),
+    (0.6, [(0.225, 0.259), (0.398, 0.451), (0.652, 0.83)]),
+    (0.7, [(0.395, 0.42), (0.688, 0.749), (1.08, 1.372)]),
+    (0.8, [(0.79, 0.816), (1.484, 1.718), (2.13, 3.08)]),
+    (0.9, [(2.48, 2.75), (4.0, 5.64), (5.37, 13.1)]),
+    (0.95, [(5.73, 7.16), (9.61, 20.9), (9.87, 43.4)]),
+    (f64::INFINITY, [(40.3, 82.5), (44.3, 189.0), (19.8, 94.4)]),
+];
 
 /// Lower bounds on [`RATE_PER_C`]'s bound on the move per lc, (int |dp|, int |dq~|) / dlc: below
 /// c = 4e-5 (served since `system::SMALL_STICK_BELOW`) the move measured at level 1 over
@@ -502,8 +529,10 @@ const RATE_PER_C: (f64, f64) = (55.0, 70.0);
 const RATE_FLOOR: [(f64, (f64, f64)); 2] =
     [(0.98, (9.6e-5, 9.0e-5)), (f64::INFINITY, (4.9e-4, 6.6e-4))];
 
-/// The stick zones below which [`RATE_PER_C`] bounds the move per lc too.
-const SMALL_C: f64 = 0.01;
+/// The stick zones below which [`RATE_PER_C`] bounds the move per lc too: the table's
+/// largest band of c (above 0.3 the slip zone's width w takes over: the move per c grows as
+/// 1/w, up to (4.1e4, 2.0e5) at b* = 0.2 .. 0.3 with c above 0.5).
+const SMALL_C: f64 = 0.3;
 
 /// The bounds at b* and the stick edge c (1 - c = w): (per lc, per sigma), from
 /// [`SENSITIVITY_BOUNDS`] and, for c < [`SMALL_C`], [`RATE_PER_C`].
@@ -517,8 +546,19 @@ fn sensitivity_bounds(b: f64, c: f64, w: f64) -> ((f64, f64), (f64, f64)) {
             .iter()
             .find(|r| b < r.0)
             .unwrap_or(&RATE_FLOOR[RATE_FLOOR.len() - 1]);
-        p = p.min((RATE_PER_C.0 * c * w).max(floor.0));
-        q = q.min((RATE_PER_C.1 * c * w).max(floor.1));
+        let &(_, by_c) = RATE_PER_C
+            .iter()
+            .find(|r| b < r.0)
+            .unwrap_or(&RATE_PER_C[RATE_PER_C.len() - 1]);
+        let (per_c_p, per_c_q) = by_c[if c < 0.01 {
+            0
+        } else if c < 0.1 {
+            1
+        } else {
+            2
+        }];
+        p = p.min((per_c_p * c * w).max(floor.0));
+        q = q.min((per_c_q * c * w).max(floor.1));
     }
     ((p, q), by_sigma)
 }

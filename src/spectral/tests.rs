@@ -170,10 +170,10 @@ fn newton_ladder_moves_to_the_root() {
 }
 
 /// The bounds that stand in for the measured slope and moves per lc and per sigma at a known
-/// stick edge ([`SLOPE_FLOOR`], [`SENSITIVITY_BOUNDS`], [`RATE_PER_C`], measured on a 53 x 53
-/// grid) hold on another grid of the
-/// table's coordinates (37 x 37, none of its nodes on the first) and at the smallest stick
-/// zones served, measured as [`First::measured`] measures them.
+/// stick edge ([`SLOPE_FLOOR`], [`SENSITIVITY_BOUNDS`], measured on a 53 x 53 grid, and
+/// [`RATE_PER_C`], on a 161 x 161 grid) hold on another grid of the table's coordinates
+/// (37 x 37 cell midpoints; only its centre is a node of the others) and at the smallest
+/// stick zones served, measured as [`First::measured`] measures them.
 #[test]
 fn sensitivity_bounds_hold() {
     let ([lo_b, hi_b], [lo_z, hi_z]) = crate::stick_edge_table::extent();
@@ -243,4 +243,71 @@ fn sensitivity_bounds_hold() {
         worst[0], worst[1], worst[2], worst[3], worst[4]
     );
     assert!(served > 250, "only {served} served points");
+}
+
+/// Prints the tractions' move per unit of c, (int |dp|, int |dq~|) / dc = rate / (c (1 - c)),
+/// measured as [`First::measured_at`] measures it at levels 1, 2 and 3, the largest per band
+/// of b* and of c on a 53 x 53 grid of the table's coordinates: the table of
+/// the move per lc by (b*, c).
+#[cfg(feature = "measure")]
+#[test]
+#[ignore]
+fn measure_rate_per_c_by_b() {
+    let ([lo_b, hi_b], [lo_z, hi_z]) = crate::stick_edge_table::extent();
+    let grid: usize = std::env::var("X_GRID").map_or(53, |v| v.parse().unwrap());
+    let b_edges = [0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 0.95, 1.0];
+    let c_edges = [1e-4, 1e-3, 0.01, 0.03, 0.1, 0.2, 0.3, 0.5, 1.0];
+    let mut worst = vec![[0.0f64; 2]; b_edges.len() * c_edges.len()];
+    let mut count = vec![0usize; b_edges.len() * c_edges.len()];
+    for n in 0..grid * grid {
+        let (i, j) = (n / grid, n % grid);
+        let beta = lo_b + (hi_b - lo_b) * i as f64 / (grid - 1) as f64;
+        let zeta = lo_z + (hi_z - lo_z) * j as f64 / (grid - 1) as f64;
+        let (b, mu) = crate::stick_edge_table::coupling_at(beta, zeta);
+        let Some((lc, _)) = crate::stick_edge_table::lookup(b, mu) else {
+            continue;
+        };
+        let k = consts(b, mu);
+        if !serves(k, lc) {
+            continue;
+        }
+        let e = StickEdge::from_logit(lc);
+        let (Some(bi), Some(ci)) = (
+            b_edges.iter().position(|&v| b < v),
+            c_edges.iter().position(|&v| e.c < v),
+        ) else {
+            continue;
+        };
+        let cell = bi * c_edges.len() + ci;
+        for level in 1..=3 {
+            let sizes = Sizes::at(level, e.c, e.one_minus_c);
+            let Some(cur) = sigma_at(k, lc, sizes) else {
+                continue;
+            };
+            let mut first = First {
+                lc,
+                base: None,
+                measured: None,
+            };
+            let Some(s) = first.measured_at(k, &cur.fixed, sizes) else {
+                continue;
+            };
+            let cw = e.c * e.one_minus_c;
+            worst[cell][0] = worst[cell][0].max(s.rate.0 / cw);
+            worst[cell][1] = worst[cell][1].max(s.rate.1 / cw);
+        }
+        count[cell] += 1;
+    }
+    println!("| b* below | c below | points | p per c | q~ per c |");
+    for (bi, bv) in b_edges.iter().enumerate() {
+        for (ci, cv) in c_edges.iter().enumerate() {
+            let cell = bi * c_edges.len() + ci;
+            if count[cell] > 0 {
+                println!(
+                    "| {bv} | {cv} | {} | {:.3e} | {:.3e} |",
+                    count[cell], worst[cell][0], worst[cell][1]
+                );
+            }
+        }
+    }
 }
