@@ -311,3 +311,57 @@ fn measure_rate_per_c_by_b() {
         }
     }
 }
+
+/// Prints sigma at the stick edge (the table's, else the panels' at 1e-12) of thin slip zones
+/// and small edge exponents, half level by half level: as solved, the change with the rows
+/// reversed (another rounding of the same least squares), the change from the half level
+/// below, the largest coefficient and the residual (R1): the rounding floor of sigma, and so
+/// of c, in docs/theory_spectral.md section 5.
+#[cfg(feature = "measure")]
+#[test]
+#[ignore]
+fn measure_sigma_noise_in_thin_slip_zones() {
+    use crate::problem::Profile;
+    for (b, mu) in [
+        (0.3, 0.5),
+        (0.2857142857142857, 1.0),
+        (0.45, 2.0),
+        (0.25, 100.0),
+        (0.33, 400.0),
+        (0.2, 3.0949),
+        (0.2, 10.0),
+        (0.1, 1.5),
+    ] {
+        let (lc, bound) = crate::stick_edge_table::lookup(b, mu).unwrap_or_else(|| {
+            let k = crate::problem::Coupling { bp: b, bq: b, mu };
+            let s = crate::coupled::solve_panels_to(&k, 1e-12, f64::INFINITY).unwrap();
+            let e = s.edge();
+            (e.c.ln() - e.one_minus_c.ln(), s.numerical_error())
+        });
+        let k = consts(b, mu);
+        let e = StickEdge::from_logit(lc);
+        println!(
+            "({b}, {mu}) g {:.4} 1-c {:.3e} bound {bound:.1e}",
+            k.g, e.one_minus_c
+        );
+        let mut prev: Option<f64> = None;
+        for half in 3..=14 {
+            let sizes = Sizes::at_real(0.5 * half as f64, e.c, e.one_minus_c);
+            let sys = Assembled::new(k, e.c, e.one_minus_c, sizes);
+            let cur = sys.solve().unwrap();
+            let order: Vec<usize> = (0..sys.rows()).rev().collect();
+            let rev = sys.solve_rows(&order).unwrap();
+            let big = cur.coef.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+            println!(
+                "  half {half} n {} sigma {:+.3e} reversed {:+.2e} below {:+.2e} max|coef| \
+                 {big:.1e} residual {:.1e}",
+                cur.unknowns(),
+                cur.sigma,
+                rev.sigma - cur.sigma,
+                prev.map_or(f64::NAN, |p| p - cur.sigma),
+                cur.residual
+            );
+            prev = Some(cur.sigma);
+        }
+    }
+}
