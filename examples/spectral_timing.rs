@@ -1,5 +1,7 @@
-//! COUPLED's spectral solver (global bases per zone, docs/theory_spectral.md; not yet
-//! COUPLED's default) against COUPLED as it is (the panels), on the 12 scenes of examples/speed_accuracy.rs, in one run: per scene the
+//! COUPLED as it runs (the spectral solver on global bases per zone where it serves,
+//! docs/theory_spectral.md) against the panels alone (`coupled::solve_panels_to`, the
+//! independent discretisation it falls back to), on the 12 scenes of
+//! examples/speed_accuracy.rs, in one run: per scene the
 //! regime that answered, the unknowns, the time per solve (median of repeated solves, wall
 //! time) and the distance between the two answers' c and tractions; then the medians and
 //! their ratio. Writes docs/spectral_timing.md.

@@ -432,3 +432,37 @@ fn goodman_limit_shakes_down_after_the_first_unloading_at_every_amplitude() {
         assert!(w[0] > 1e-4 && w[1] < 1e-12 && w[2] < 1e-12, "{amp}: {w:?}");
     }
 }
+
+/// The ply (mu = 0.3, Q* = 0.6 mu P): the first unloading's dissipation W1 on the grid, Q*
+/// -> -Q* in S equal steps from the state at Q* (which does not depend on the loading's
+/// steps), for n panels per half-width and S from ORTHOSLIP_GRID_N and ORTHOSLIP_GRID_STEPS
+/// (defaults 200, 400 and 20 .. 320): the table of docs/theory_tangential.md section 21
+/// that brackets the exact corner phase's dissipation. A measurement, not a check: `measure`
+/// feature only (`cargo test --release --features measure -- --ignored
+/// measure_ply_unloading_dissipation_on_the_grid`; about 4 min at the defaults).
+#[cfg(feature = "measure")]
+#[test]
+#[ignore = "measurement: minutes"]
+fn measure_ply_unloading_dissipation_on_the_grid() {
+    let k = ply(0.3);
+    let q_star = 0.18;
+    let list = |var: &str, default: Vec<usize>| -> Vec<usize> {
+        std::env::var(var)
+            .map(|v| v.split(',').map(|s| s.parse().unwrap()).collect())
+            .unwrap_or(default)
+    };
+    for n in list("ORTHOSLIP_GRID_N", vec![200, 400]) {
+        for s in list("ORTHOSLIP_GRID_STEPS", vec![20, 40, 80, 160, 320]) {
+            let t = std::time::Instant::now();
+            let mut h = History::new(&k, n).unwrap();
+            h.load(q_star, 1).unwrap();
+            let w: f64 = h
+                .load(-q_star, s)
+                .unwrap()
+                .iter()
+                .map(|st| st.dissipation)
+                .sum();
+            println!("n = {n}, S = {s}: W1 = {w:.10e} ({:?})", t.elapsed());
+        }
+    }
+}

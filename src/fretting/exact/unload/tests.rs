@@ -1451,3 +1451,41 @@ fn hand_over_on_the_ply() {
     );
     assert!(jump.abs() <= 2.0 * (slope * (hi - lo)).abs() + below.c_error);
 }
+
+/// The three-zone phase of the ply's first unloading (-0.485 Q* .. -Q*, Q* = 0.6 mu P) summed
+/// with [`dissipation`] over 4, 8, 16 and 32 equal load steps, and extrapolated with order 2
+/// from each pair: the part of the exact W1 that
+/// `path::tests::ply_corner_phase_dissipation_against_the_grid` subtracts from the grid's.
+/// A measurement, not a check: `measure` feature only (`cargo test --release --features
+/// measure -- --ignored measure_three_zone_phase_dissipation`; about 2 min).
+#[cfg(feature = "measure")]
+#[test]
+#[ignore = "measurement: minutes"]
+fn measure_three_zone_phase_dissipation() {
+    let k = ply();
+    let q_star = 0.18;
+    let m = Arc::new(monotonic(&k, q_star, 1e-10, 1e-6).unwrap());
+    let t = std::time::Instant::now();
+    let q0 = -0.485 * q_star;
+    let n = 32;
+    let states: Vec<Unloading> = (0..=n)
+        .map(|j| {
+            let qp = q0 + (-q_star - q0) * j as f64 / n as f64;
+            unload(&m, qp, 1e-8, 1e-5).unwrap()
+        })
+        .collect();
+    let sum = |stride: usize| {
+        (0..n / stride)
+            .map(|j| dissipation(&states[j * stride], &states[(j + 1) * stride]))
+            .sum::<f64>()
+    };
+    let w: Vec<(usize, f64)> = [8, 4, 2, 1].iter().map(|&s| (n / s, sum(s))).collect();
+    for pair in w.windows(2) {
+        let ((s0, w0), (s1, w1)) = (pair[0], pair[1]);
+        println!(
+            "{s0} steps {w0:.10e}, {s1} steps {w1:.10e}: extrapolated {:.10e}",
+            w1 + (w1 - w0) / 3.0
+        );
+    }
+    println!("{:?}", t.elapsed());
+}
