@@ -351,6 +351,99 @@ impl JacobiFamily {
     /// T_k = T_0 f_k / f_0. The lanes step through the degrees together, each from its own
     /// start.
     fn backward(&self, lanes: &[(Point, usize, usize, f64)], out: &mut [f64]) {
+        #[cfg(target_arch = "x86_64")]
+        if lanes.len() == MILLER_LANES && std::arch::is_x86_feature_detected!("avx") {
+            // SAFETY: the CPU has AVX (checked just above)
+            unsafe { self.backward_avx(lanes, out) };
+            return;
+        }
+        self.backward_scalar(lanes, out);
+    }
+
+    /// [`JacobiFamily::backward`] for [`MILLER_LANES`] = 4 lanes in one AVX register: the
+    /// same operations in the same order per lane (no fused multiply-add), so the same
+    /// values to the bit. A lane waits (f_k = 1, f_(k+1) = 0) until its own start; every
+    /// start lies above n, so every lane is running where the transforms are stored.
+    /// Measured on the 12 speed scenes (thread CPU time, the median over the scenes, against
+    /// the lanes one after the other, alternated four times in one run): 0.097-0.098 to
+    /// 0.095 ms at (1e-10, 1e-8), 0.121-0.123 to 0.116-0.118 ms at (1e-10, 1e-10); steel at
+    /// mu = 0.3 1.148M to 1.108M instructions per answer (callgrind), kappa = 0.4 at mu = 1
+    /// 1.408M to 1.354M; the 48 answers of the bits check the same to the bit.
+    #[cfg(target_arch = "x86_64")]
+    #[target_feature(enable = "avx")]
+    unsafe fn backward_avx(&self, lanes: &[(Point, usize, usize, f64)], out: &mut [f64]) {
+        use std::arch::x86_64::*;
+        let (n, r) = (self.n, &self.rec);
+        let at = [lanes[0].2, lanes[1].2, lanes[2].2, lanes[3].2];
+        let starts = [lanes[0].1, lanes[1].1, lanes[2].1, lanes[3].1];
+        let y = _mm256_setr_pd(lanes[0].0.y, lanes[1].0.y, lanes[2].0.y, lanes[3].0.y);
+        let m = _mm256_setr_pd(
+            starts[0] as f64,
+            starts[1] as f64,
+            starts[2] as f64,
+            starts[3] as f64,
+        );
+        let (sign, rescale) = (_mm256_set1_pd(-0.0), _mm256_set1_pd(RESCALE));
+        let mut next = _mm256_setzero_pd();
+        let mut cur = _mm256_set1_pd(1.0);
+        let mut lane = [0.0; MILLER_LANES];
+        let top = starts.iter().copied().max().unwrap_or(0);
+        for k in (1..top).rev() {
+            let (inv, diag, off) = (r.inv_off[k - 1], r.diag[k], r.off[k]);
+            let running = _mm256_cmp_pd::<_CMP_LT_OQ>(_mm256_set1_pd(k as f64), m);
+            let a = _mm256_mul_pd(_mm256_sub_pd(y, _mm256_set1_pd(diag)), _mm256_set1_pd(inv));
+            let prev = _mm256_sub_pd(
+                _mm256_mul_pd(a, cur),
+                _mm256_mul_pd(_mm256_set1_pd(off * inv), next),
+            );
+            next = _mm256_blendv_pd(next, cur, running);
+            cur = _mm256_blendv_pd(cur, prev, running);
+            if k - 1 < n {
+                // SAFETY: `lane` holds four f64
+                unsafe { _mm256_storeu_pd(lane.as_mut_ptr(), cur) };
+                for j in 0..MILLER_LANES {
+                    out[at[j] + k - 1] = lane[j];
+                }
+            }
+            let big = _mm256_cmp_pd::<_CMP_GT_OQ>(_mm256_andnot_pd(sign, cur), rescale);
+            if _mm256_movemask_pd(big) != 0 {
+                let mut low = [0.0; MILLER_LANES];
+                // SAFETY: `lane` and `low` hold four f64
+                unsafe {
+                    _mm256_storeu_pd(lane.as_mut_ptr(), cur);
+                    _mm256_storeu_pd(low.as_mut_ptr(), next);
+                }
+                for j in 0..MILLER_LANES {
+                    if lane[j].abs() > RESCALE {
+                        low[j] /= RESCALE;
+                        lane[j] /= RESCALE;
+                        if k - 1 < n {
+                            for v in &mut out[at[j] + k - 1..at[j] + n] {
+                                *v /= RESCALE;
+                            }
+                        }
+                    }
+                }
+                // SAFETY: as above
+                unsafe {
+                    cur = _mm256_loadu_pd(lane.as_ptr());
+                    next = _mm256_loadu_pd(low.as_ptr());
+                }
+            }
+        }
+        // SAFETY: `lane` holds four f64
+        unsafe { _mm256_storeu_pd(lane.as_mut_ptr(), cur) };
+        for (j, &(_, _, at, t0)) in lanes.iter().enumerate() {
+            let norm = t0 / lane[j];
+            for v in &mut out[at + 1..at + n] {
+                *v *= norm;
+            }
+            out[at] = t0;
+        }
+    }
+
+    /// [`JacobiFamily::backward`], one lane after the other at each degree.
+    fn backward_scalar(&self, lanes: &[(Point, usize, usize, f64)], out: &mut [f64]) {
         let (n, r) = (self.n, &self.rec);
         let mut next = [0.0; MILLER_LANES];
         let mut cur = [1.0; MILLER_LANES];
@@ -475,6 +568,42 @@ mod tests {
         (0.3, -0.3),
         (0.0, -0.3),
     ];
+
+    /// Four points' backward recurrences run together ([`JacobiFamily::backward_avx`] where
+    /// the CPU has AVX) give each point's transforms to the bit as the point alone
+    /// ([`JacobiFamily::backward_scalar`]): points at different distances, so that the lanes
+    /// start at different degrees, and far points (y = 1e6 .. -1e8), whose recurrences grow
+    /// past [`RESCALE`] at n = 24 (rho^n > 2^500) and are rescaled.
+    #[test]
+    fn four_lanes_are_each_lane_alone_to_the_bit() {
+        for (a, b) in WEIGHTS {
+            for n in [6, 17, 24] {
+                let fam = JacobiFamily::new(a, b, n);
+                for ys in [
+                    [1.3, -2.5, 1e6, -30.0],
+                    [1.05, 1.01, -1e8, 4.0],
+                    [-1.2, -1.2, 1.5, 2e7],
+                ] {
+                    let points: Vec<Point> = ys.iter().map(|&y| Point::new(y)).collect();
+                    let factors = vec![None; points.len()];
+                    let mut together = vec![0.0; 4 * n];
+                    fam.transforms_many(&points, &factors, &mut together);
+                    for (i, p) in points.iter().enumerate() {
+                        let mut alone = vec![0.0; n];
+                        fam.transforms_many(&[*p], &[None], &mut alone);
+                        for k in 0..n {
+                            assert_eq!(
+                                together[i * n + k].to_bits(),
+                                alone[k].to_bits(),
+                                "({a}, {b}) n = {n} y = {} k = {k}",
+                                ys[i]
+                            );
+                        }
+                    }
+                }
+            }
+        }
+    }
 
     /// Far from the interval (Gauss-Jacobi converges like rho^-400): every family and degree.
     #[test]
