@@ -11,6 +11,14 @@ fn consts(b: f64, mu: f64) -> Constants {
     }
 }
 
+/// The constants, the tabulated stick edge lc and its bound where the table covers (b*, mu~)
+/// and the bases serve it.
+fn served_edge(b: f64, mu: f64) -> Option<(Constants, f64, f64)> {
+    let (lc, bound) = crate::stick_edge_table::lookup(b, mu)?;
+    let k = consts(b, mu);
+    serves(k, lc).then_some((k, lc, bound))
+}
+
 /// Mid-range scenes (c = 0.04 .. 0.92), c by the root search (no bound on the starting c):
 /// c within the tabulated stick edge's bound plus the estimate (the table was built by the
 /// panels, an independent discretisation), and both estimates hold against a solve to
@@ -99,13 +107,9 @@ fn sweep(grid: usize) -> (usize, usize, f64) {
             let beta = lo_b + (hi_b - lo_b) * (i as f64 + 0.5) / grid as f64;
             let zeta = lo_z + (hi_z - lo_z) * (j as f64 + 0.5) / grid as f64;
             let (b, mu) = crate::stick_edge_table::coupling_at(beta, zeta);
-            let Some((lc, bound)) = crate::stick_edge_table::lookup(b, mu) else {
+            let Some((k, lc, bound)) = served_edge(b, mu) else {
                 continue;
             };
-            let k = consts(b, mu);
-            if !serves(k, lc) {
-                continue;
-            }
             tried += 1;
             let s = from_edge(k, lc, bound, 1e-10, 1e-8, 1.0);
             let Some(s) = s else {
@@ -199,13 +203,9 @@ fn sensitivity_bounds_hold() {
     ]);
     let (mut served, mut worst) = (0, [0.0f64; 5]);
     for (b, mu) in scenes {
-        let Some((lc, _)) = crate::stick_edge_table::lookup(b, mu) else {
+        let Some((k, lc, _)) = served_edge(b, mu) else {
             continue;
         };
-        let k = consts(b, mu);
-        if !serves(k, lc) {
-            continue;
-        }
         let e = StickEdge::from_logit(lc);
         let base = sigma_at(k, lc, Sizes::at(FIRST_LEVEL, e.c, e.one_minus_c)).expect("level 1");
         let mut first = First {
@@ -264,13 +264,9 @@ fn measure_rate_per_c_by_b() {
         let beta = lo_b + (hi_b - lo_b) * i as f64 / (grid - 1) as f64;
         let zeta = lo_z + (hi_z - lo_z) * j as f64 / (grid - 1) as f64;
         let (b, mu) = crate::stick_edge_table::coupling_at(beta, zeta);
-        let Some((lc, _)) = crate::stick_edge_table::lookup(b, mu) else {
+        let Some((k, lc, _)) = served_edge(b, mu) else {
             continue;
         };
-        let k = consts(b, mu);
-        if !serves(k, lc) {
-            continue;
-        }
         let e = StickEdge::from_logit(lc);
         let (Some(bi), Some(ci)) = (
             b_edges.iter().position(|&v| b < v),
