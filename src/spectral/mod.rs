@@ -485,7 +485,8 @@ const SENSITIVITY_BOUNDS: [SensitivityBand; 11] = [
 /// | 0.95 .. 0.99 | 20.1, 41.2 | 22.1, 94.4 | 9.88, 47.2 |
 ///
 /// (6-1041 points per cell, 16,954 solves in all.) The bounds are twice the largest. The grid
-/// of `tests::sensitivity_bounds_hold` (37 x 37, none of its nodes on this one) checks them.
+/// of `tests::sensitivity_bounds_hold` (37 x 37 cell midpoints, only its centre a node of
+/// this one) checks them.
 /// (With [`SENSITIVITY_BOUNDS`] alone from c = 0.01 up, and one pair, (55, 70), below, the
 /// bound on the move at tractions to 1e-10 failed b* = 0.318, c = 0.020 (delta = 10,
 /// mu = 1), which then measured the slope and the move, one more solve, and b* = 0.448,
@@ -524,8 +525,9 @@ const RATE_PER_C: [(f64, [(f64, f64); 3]); 11] = [
 /// | 0.98 .. 0.99 | 22 | 2.45e-4 | 3.27e-4 |
 ///
 /// The floors are twice the largest of each band, below b* = 0.98 and above (b* below,
-/// floors); below 0.98 they lie under [`RATE_PER_C`]'s bound from c = 1.8e-6 up, above it
-/// from c = 9.4e-6 up, so nothing changes above those.
+/// floors). They take over from [`RATE_PER_C`]'s bound below c = floor / (its bound per c):
+/// about 2.4e-6 at b* above 0.95 (1.2e-5 above 0.98), 1.4e-3 at b* = 0.3 .. 0.4 and 0.037
+/// below b* = 0.1, where the move per lc is small anyway (the bounds only get looser).
 const RATE_FLOOR: [(f64, (f64, f64)); 2] =
     [(0.98, (9.6e-5, 9.0e-5)), (f64::INFINITY, (4.9e-4, 6.6e-4))];
 
