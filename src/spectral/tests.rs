@@ -247,14 +247,15 @@ fn sensitivity_bounds_hold() {
 
 /// Prints the tractions' move per unit of c, (int |dp|, int |dq~|) / dc = rate / (c (1 - c)),
 /// measured as [`First::measured_at`] measures it at levels 1, 2 and 3, the largest per band
-/// of b* and of c on a 53 x 53 grid of the table's coordinates: the table of
-/// the move per lc by (b*, c).
+/// of b* and of c on an n x n grid of the table's coordinates (n from ORTHOSLIP_GRID, 161 by
+/// default; 19 s): the table behind [`RATE_PER_C`]. A measurement, not a check: `measure`
+/// feature only (`cargo test --release --features measure -- --ignored measure_rate_per_c`).
 #[cfg(feature = "measure")]
 #[test]
-#[ignore]
+#[ignore = "measurement"]
 fn measure_rate_per_c_by_b() {
     let ([lo_b, hi_b], [lo_z, hi_z]) = crate::stick_edge_table::extent();
-    let grid: usize = std::env::var("X_GRID").map_or(53, |v| v.parse().unwrap());
+    let grid: usize = std::env::var("ORTHOSLIP_GRID").map_or(161, |v| v.parse().unwrap());
     let b_edges = [0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 0.95, 1.0];
     let c_edges = [1e-4, 1e-3, 0.01, 0.03, 0.1, 0.2, 0.3, 0.5, 1.0];
     let mut worst = vec![[0.0f64; 2]; b_edges.len() * c_edges.len()];
@@ -312,10 +313,11 @@ fn measure_rate_per_c_by_b() {
 /// and small edge exponents, half level by half level: as solved, the change with the rows
 /// reversed (another rounding of the same least squares), the change from the half level
 /// below, the largest coefficient and the residual (R1): the rounding floor of sigma, and so
-/// of c, in docs/theory_spectral.md section 5.
+/// of c, in docs/theory_spectral.md section 5. A measurement, not a check: `measure` feature
+/// only (a few seconds; the panels' c at 1e-12 for the untabulated scenes).
 #[cfg(feature = "measure")]
 #[test]
-#[ignore]
+#[ignore = "measurement"]
 fn measure_sigma_noise_in_thin_slip_zones() {
     use crate::problem::Profile;
     for (b, mu) in [
