@@ -19,7 +19,10 @@
 //! friction bound and the reloading pushes it towards the bound, the mirror of the
 //! unloading's corner above -0.48 Q* (section 13). On the ply the three-zone answer does not
 //! converge there (the levels' tractions stay 5e-4 .. 9e-3 apart) and slips backwards at +1:
-//! it is refused (NoConvergence or NoAdmissibleSolution) along the whole branch.
+//! it is refused (NoConvergence or NoAdmissibleSolution) along the whole branch. The
+//! corner's outer model (section 20) applies to the mirrored data (its corner is the
+//! unloaded trailing zone, (O1) with w = 1 - a2**), but its border constants are too noisy
+//! there for the chord method to find the root (section 22), so it is not routed here.
 
 #[cfg(test)]
 pub(crate) mod tests;

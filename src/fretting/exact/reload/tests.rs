@@ -526,3 +526,213 @@ fn goodman_second_unloading_matches_the_closed_form() {
         assert!(leading.iter().all(|(_, s)| *s > 0.0), "{leading:?}");
     }
 }
+
+/// The unloaded state at -Q* (the ply, mu = 0.3, Q* = 0.6 mu P) to (1e-10, 1e-5), seen
+/// mirrored: the reloading's data (docs/theory_tangential.md section 22).
+fn mirrored_unloaded_ply() -> (Arc<Mirror>, Arc<super::super::Monotonic>, f64) {
+    let k = ply();
+    let q_star = 0.6 * k.mu;
+    let m = Arc::new(monotonic(&k, q_star, 1e-10, 1e-8).unwrap());
+    let u = Arc::new(unload(&m, -q_star, 1e-10, 1e-5).unwrap());
+    (Arc::new(Mirror { inner: u }), m, q_star)
+}
+
+/// The reloading's corner on the ply (docs/theory_tangential.md section 22). (1) The data
+/// at the mirrored corner is (O1): the first kink is the unloaded trailing zone's end
+/// w = 1 - a2**, a slip zone on its left; there q = -mu p and p = u^(-g) a(u) with a
+/// analytic: the log-slope of p between u = 1e-12 and 1e-11 is -g to 1e-4, and a(u)/a(0) - 1
+/// is linear in u (its ratio between u = 1e-2 w and 1e-3 w within 10 +- 1). (2) The outer
+/// model's border constants (levels 3 and 4) at the ends (e2, a1, 1 - a2) = (0.1, a, 1.0) w,
+/// Q = -0.9 Q*, as a1 = a w crosses the data's kink w: continuous there (0.999 w against
+/// 1.001 w within a fifth of their change between 0.98 w and 1.03 w), but the layer's and
+/// the first stick-set constant's slope in a1 is over ten times larger on the kink's far
+/// side (1.01 w .. 1.13 w) than on its near side (0.9 w .. 0.98 w), and the stick set's first
+/// constant changes sign between 0.98 w and 1.03 w: the root in a1 lies just beyond the
+/// kink, where the constants turn fast. The first unloading's data (the loaded edge zone,
+/// w1*) give the same picture on the same scan (the ends in units of w1*), so the kink is
+/// not what tells the two apart; but there the constants move from level 3 to level 4 by
+/// less than 1e-6 (stick set), and on the reloading's data by over a hundred times that:
+/// the noise in which the reloading's root is lost (section 22; this assertion records it,
+/// and goes when the noise is removed).
+#[test]
+#[ignore = "slow: 11-16 s (two runs, the machine shared), the ply's loaded and unloaded states and 36 solves"]
+fn reloading_corner_data_and_the_kink() {
+    use super::super::unload::corner::outer_fixed;
+    let t = std::time::Instant::now();
+    let (mirror, loaded, q_star) = mirrored_unloaded_ply();
+    let k = *mirror.coupling();
+    let g = edge_exponent(&k);
+    let first = mirror.kinks()[0];
+    assert!(first.slip_left);
+    let w = first.opx;
+    println!("w = 1 - a2** = {w:.9e}; data {:?}", t.elapsed());
+    assert!((w - 1.435e-6).abs() < 1e-9, "{w}");
+    let p_at = |u: f64| mirror.tractions(u, 2.0 - u);
+    for u in [1e-12, 1e-10, 1e-8, 0.5 * w] {
+        let (p, q) = p_at(u);
+        assert!(
+            p > 0.0 && (q + k.mu * p).abs() <= 1e-12 * k.mu * p,
+            "{u}: {p} {q}"
+        );
+    }
+    let slope = (p_at(1e-11).0 / p_at(1e-12).0).ln() / 10f64.ln();
+    let a = |u: f64| p_at(u).0 * u.powf(g);
+    let a0 = a(1e-14);
+    let ratio = (a(1e-2 * w) / a0 - 1.0) / (a(1e-3 * w) / a0 - 1.0);
+    println!(
+        "log-slope of p {slope:.6} (-g = {:.6}); a(u) ratio {ratio:.3}",
+        -g
+    );
+    assert!((slope + g).abs() < 1e-4);
+    assert!((ratio - 10.0).abs() < 1.0);
+    let qp = 0.9 * q_star;
+    let scan = |data: &dyn Start, w: f64| -> Vec<Vec<[f64; 3]>> {
+        [3, 4]
+            .iter()
+            .map(|&level| {
+                [0.3, 0.7, 0.9, 0.98, 1.03, 1.13, 0.999, 1.001, 1.01]
+                    .iter()
+                    .map(|a| {
+                        let s = outer_fixed(data, [0.1 * w, a * w, w], qp, level).unwrap();
+                        [s.sigma[0], s.sigma[1], s.sigma[2]]
+                    })
+                    .collect()
+            })
+            .collect()
+    };
+    // the largest change of each constant from level 3 to level 4
+    let noise = |rows: &[Vec<[f64; 3]>]| -> [f64; 3] {
+        std::array::from_fn(|i| {
+            (0..9)
+                .map(|j| (rows[0][j][i] - rows[1][j][i]).abs())
+                .fold(0.0, f64::max)
+        })
+    };
+    let rows = scan(&*mirror, w);
+    for (level, row) in [3, 4].iter().zip(&rows) {
+        println!(
+            "level {level}: sigma at a1/w = 0.3, 0.7, 0.9, 0.98, 1.03, 1.13, 0.999, 1.001, 1.01: {row:?}"
+        );
+    }
+    // the same scan on the first unloading's data (the loaded edge zone, w1*), at 0.9 Q*
+    let w1 = loaded.kinks()[0].opx;
+    let first = scan(&*loaded, w1);
+    for (level, row) in [3, 4].iter().zip(&first) {
+        println!("first unloading, level {level}: {row:?}");
+    }
+    let (n_re, n_first) = (noise(&rows), noise(&first));
+    println!(
+        "level 3 to 4, reloading: {:.2e} {:.2e} {:.2e}; first unloading: {:.2e} {:.2e} {:.2e}",
+        n_re[0], n_re[1], n_re[2], n_first[0], n_first[1], n_first[2]
+    );
+    // the first unloading's scan is smooth at fixed ends, the reloading's is not (section
+    // 22: its root is lost in this noise)
+    assert!(n_first[1].max(n_first[2]) < 1e-6);
+    assert!(n_re[1].min(n_re[2]) > 100.0 * n_first[1].max(n_first[2]));
+    // the columns: 0.3, 0.7, 0.9, 0.98, 1.03, 1.13, 0.999, 1.001, 1.01 (a1/w); on the
+    // reloading the stick set's first constant changes sign between 0.98 w and 1.03 w
+    for row in &rows {
+        assert!(row[4][1].signum() != row[3][1].signum());
+    }
+    for row in rows.iter().chain(&first) {
+        for i in 0..3 {
+            assert!(row[..4].iter().all(|s| s[i].signum() == row[3][i].signum()));
+            let change = (row[4][i] - row[3][i]).abs();
+            assert!((row[7][i] - row[6][i]).abs() < 0.2 * change, "{i}");
+        }
+        for (i, name) in ["layer's", "stick set's first"].iter().enumerate() {
+            let far = (row[5][i] - row[8][i]) / 0.12;
+            let near = (row[3][i] - row[2][i]) / 0.08;
+            println!("slopes in a1/w of the {name} constant: {near:.3e} near, {far:.3e} far");
+            assert!(far.abs() > 10.0 * near.abs());
+        }
+    }
+    println!("{:?}", t.elapsed());
+}
+
+/// The outer model on the ply's reloading at Q = -0.9 Q* (docs/theory_tangential.md section
+/// 22): the border constants against 1 - a2 at levels 3 and 4 (e2 = 0.125 w, a1 = 1.028 w,
+/// w = 1 - a2**) with the unloaded state to (1e-8, 1e-5) and to (1e-10, 1e-5), and against
+/// the first unloading's at 0.9 Q* (its root's e2, a1); the chord method at level 3 from
+/// five starts (in units of w) and [`outer_cold`]'s march, on the data to (1e-10, 1e-5).
+/// Prints, asserts nothing (about 4 min: 236 s in one run, the machine shared).
+#[cfg(feature = "measure")]
+#[test]
+#[ignore = "measurement"]
+fn measure_reloading_outer_model() {
+    use super::super::unload::corner::{outer_fixed, outer_level};
+    use super::super::unload::outer_cold;
+    let k = ply();
+    let q_star = 0.6 * k.mu;
+    let m = Arc::new(monotonic(&k, q_star, 1e-10, 1e-8).unwrap());
+    let scan = |data: &dyn Start, x: [f64; 2], w: f64, qp: f64| {
+        for level in [3, 4] {
+            let row: Vec<String> = [0.3, 0.5, 0.7, 0.8, 0.9, 0.95, 1.0, 1.1, 1.3, 2.0]
+                .iter()
+                .map(|f| {
+                    let s = outer_fixed(data, [x[0], x[1], f * w], qp, level).unwrap();
+                    format!("{:.3e} {:.3e} {:.3e}", s.sigma[0], s.sigma[1], s.sigma[2])
+                })
+                .collect();
+            println!("  level {level}, 1 - a2 = (0.3 .. 2) w: {row:?}");
+        }
+    };
+    println!("first unloading at 0.9 Q* (w = 1.3616251e-6):");
+    scan(
+        &*m,
+        [1.5640082e-7, 1.55530376e-6],
+        1.3616251e-6,
+        0.9 * q_star,
+    );
+    let mut mirror = None;
+    for ctol in [1e-8, 1e-10] {
+        let u = Arc::new(unload(&m, -q_star, ctol, 1e-5).unwrap());
+        let w = u.level.w2.unwrap();
+        println!(
+            "reloading at -0.9 Q*, unloaded state to ({ctol:e}, 1e-5): estimates {:.1e}, \
+             {:.1e}, level {}",
+            u.c_error, u.traction_error, u.levels
+        );
+        let mi = Mirror { inner: u };
+        scan(&mi, [0.125 * w, 1.028 * w], w, 0.9 * q_star);
+        mirror = Some((Arc::new(mi), w));
+    }
+    let (mirror, w) = mirror.unwrap();
+    for start in [
+        [0.1, 1.05, 0.95],
+        [0.1, 0.7, 0.95],
+        [0.1, 0.9, 0.95],
+        [0.1, 1.3, 0.95],
+        [0.05, 0.5, 0.95],
+    ] {
+        let t = std::time::Instant::now();
+        match outer_level(
+            &*mirror,
+            start.map(|v| v * w),
+            0.9 * q_star,
+            3,
+            1e-8,
+            &mut None,
+        ) {
+            Ok(o) => println!(
+                "chord from {start:?} w: ends {:?} w, constants {:?}, step {:.1e}; {:?}",
+                o.x.map(|v| v / w),
+                &o.state.sigma[..3],
+                o.step,
+                t.elapsed()
+            ),
+            Err(e) => println!("chord from {start:?} w: {e}; {:?}", t.elapsed()),
+        }
+    }
+    let t = std::time::Instant::now();
+    match outer_cold(&mirror, 0.9 * q_star, 1e-8, 1e-5) {
+        Ok(o) => println!(
+            "outer_cold: layer {:?}, 1 + a1 = {:e}, 1 - a2 = {:?}; {:?}",
+            o.level.layer,
+            o.level.wa,
+            o.level.w2,
+            t.elapsed()
+        ),
+        Err(e) => println!("outer_cold: {e}; {:?}", t.elapsed()),
+    }
+}
