@@ -22,7 +22,8 @@
 //! it is refused (NoConvergence or NoAdmissibleSolution) along the whole branch. The
 //! corner's outer model (section 20) applies to the mirrored data (its corner is the
 //! unloaded trailing zone, (O1) with w = 1 - a2**), but its border constants are too noisy
-//! there for the chord method to find the root (section 22), so it is not routed here.
+//! there for the chord method to find the root, so it is not routed here (section 22: the
+//! unloaded state's kinks miss the loaded kink c2* its forcing carries beyond its stick set).
 
 #[cfg(test)]
 pub(crate) mod tests;

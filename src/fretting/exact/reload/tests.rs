@@ -736,3 +736,177 @@ fn measure_reloading_outer_model() {
         Err(e) => println!("outer_cold: {e}; {:?}", t.elapsed()),
     }
 }
+
+/// Where the reloading's outer model picks up its noise (docs/theory_tangential.md section
+/// 22; the ply at Q = -0.9 Q*, level 3, ends (0.1, 1.03, 1.0) w): the data are the unloaded
+/// state to (1e-8, 1e-5) ("a") and to (1e-10, 1e-5) ("b"); prints the two data's forcing at
+/// points near both ends (their change relative to bq p), the constants on a, on b, on a with
+/// b's forcing in a region or everywhere, and on a with b's forcing and one of b's kinks; and
+/// the level 3 to 4 change on b at ends away from the kink, with b's kinks and with the
+/// loaded state's c2* added to them. Asserts nothing (13 s in one run).
+#[cfg(feature = "measure")]
+#[test]
+#[ignore = "measurement"]
+fn measure_reloading_noise_source() {
+    use super::super::unload::corner::outer_fixed;
+    struct Hybrid {
+        a: Arc<Mirror>,
+        b: Arc<Mirror>,
+        lo: f64,
+        hi: f64,
+        kink_from_b: Option<usize>,
+        extra: Option<super::super::unload::Kink>,
+    }
+    impl Start for Hybrid {
+        fn coupling(&self) -> &Coupling {
+            self.a.coupling()
+        }
+        fn qp(&self) -> f64 {
+            self.a.qp()
+        }
+        fn kinks(&self) -> Vec<super::super::unload::Kink> {
+            let mut k = self.a.kinks();
+            if let Some(i) = self.kink_from_b {
+                k[i] = self.b.kinks()[i];
+            }
+            if let Some(x) = self.extra {
+                k.push(x);
+            }
+            k
+        }
+        fn tractions(&self, opx: f64, omx: f64) -> (f64, f64) {
+            self.a.tractions(opx, omx)
+        }
+        fn forcing(&self, opx: f64, omx: f64) -> f64 {
+            if opx < self.lo || omx < self.hi {
+                self.b.forcing(opx, omx)
+            } else {
+                self.a.forcing(opx, omx)
+            }
+        }
+        fn path(&self) -> Vec<f64> {
+            self.a.path()
+        }
+        fn sign(&self) -> f64 {
+            self.a.sign()
+        }
+    }
+    let k = ply();
+    let q_star = 0.6 * k.mu;
+    let m = Arc::new(monotonic(&k, q_star, 1e-10, 1e-8).unwrap());
+    let ua = Arc::new(unload(&m, -q_star, 1e-8, 1e-5).unwrap());
+    let ub = Arc::new(unload(&m, -q_star, 1e-10, 1e-5).unwrap());
+    println!(
+        "levels {} {}; w {:.9e} {:.9e}",
+        ua.levels,
+        ub.levels,
+        ua.level.w2.unwrap(),
+        ub.level.w2.unwrap()
+    );
+    let w = ub.level.w2.unwrap();
+    let a = Arc::new(Mirror { inner: ua });
+    let b = Arc::new(Mirror { inner: ub.clone() });
+    for (x, what) in [
+        (1e-9, "u"),
+        (1e-8, "u"),
+        (1e-7, "u"),
+        (7e-7, "u"),
+        (1.4e-6, "u"),
+        (1e-5, "u"),
+        (0.1, "u"),
+        (1.0, "u"),
+        (1e-9, "v"),
+        (1e-8, "v"),
+        (1e-7, "v"),
+        (1e-6, "v"),
+        (1e-5, "v"),
+        (1e-2, "v"),
+    ] {
+        let (opx, omx) = if what == "u" {
+            (x, 2.0 - x)
+        } else {
+            (2.0 - x, x)
+        };
+        let (fa, fb) = (a.forcing(opx, omx), b.forcing(opx, omx));
+        let (p, _) = b.tractions(opx, omx);
+        println!(
+            "{what} = {x:e}: forcing {fb:.6e}, change {:.2e}, over bq p {:.2e}",
+            fa - fb,
+            (fa - fb) / (k.bq * p)
+        );
+    }
+    let x = [0.1 * w, 1.03 * w, w];
+    let qp = 0.9 * q_star;
+    let sig = |d: &dyn Start| {
+        let s = outer_fixed(d, x, qp, 3).unwrap();
+        [s.sigma[0], s.sigma[1], s.sigma[2]]
+    };
+    // b alone, then b with the loaded state's kink c2* (mirrored), which r* carries 0.019
+    // beyond a1** and the unloaded state's kinks do not list
+    let c2 = super::super::unload::Kink {
+        opx: 1.0 - m.stick_set().1,
+        slip_left: true,
+        seen_from_right: true,
+        seen_from_left: true,
+    };
+    for extra in [None, Some(c2)] {
+        let bb = Hybrid {
+            a: b.clone(),
+            b: b.clone(),
+            lo: 0.0,
+            hi: 0.0,
+            kink_from_b: None,
+            extra,
+        };
+        println!("b's kinks {:?}", bb.kinks());
+        for f in [1.03, 1.3, 2.0, 5.0] {
+            for e in [0.1, 0.5] {
+                let l: Vec<[f64; 3]> = [3, 4]
+                    .iter()
+                    .map(|&lv| {
+                        let s = outer_fixed(&bb, [e * w, f * w, w], qp, lv).unwrap();
+                        [s.sigma[0], s.sigma[1], s.sigma[2]]
+                    })
+                    .collect();
+                println!(
+                    "  e2 = {e} w, a1 = {f} w: level 4 {:?}; change from level 3 {:.2e} {:.2e} \
+                     {:.2e}",
+                    l[1],
+                    l[1][0] - l[0][0],
+                    l[1][1] - l[0][1],
+                    l[1][2] - l[0][2]
+                );
+            }
+        }
+    }
+    println!("a {:?}", sig(&*a));
+    println!("b {:?}", sig(&*b));
+    for (lo, hi, name) in [
+        (w, 0.0, "b on u < w"),
+        (0.0, 1e-3, "b on 1 - x < 1e-3"),
+        (1e-3, 0.0, "b on u < 1e-3"),
+        (2.0, 0.0, "b everywhere"),
+    ] {
+        let h = Hybrid {
+            a: a.clone(),
+            b: b.clone(),
+            lo,
+            hi,
+            kink_from_b: None,
+            extra: None,
+        };
+        println!("{name}: {:?}", sig(&h));
+    }
+    println!("kinks a {:?}\nkinks b {:?}", a.kinks(), b.kinks());
+    for i in 0..a.kinks().len() {
+        let h = Hybrid {
+            a: a.clone(),
+            b: b.clone(),
+            lo: 2.0,
+            hi: 0.0,
+            kink_from_b: Some(i),
+            extra: None,
+        };
+        println!("b's forcing and b's kink {i}: {:?}", sig(&h));
+    }
+}
