@@ -549,11 +549,10 @@ fn mirrored_unloaded_ply() -> (Arc<Mirror>, Arc<super::super::Monotonic>, f64) {
 /// side (1.01 w .. 1.13 w) than on its near side (0.9 w .. 0.98 w), and the stick set's first
 /// constant changes sign between 0.98 w and 1.03 w: the root in a1 lies just beyond the
 /// kink, where the constants turn fast. The first unloading's data (the loaded edge zone,
-/// w1*) give the same picture on the same scan (the ends in units of w1*), so the kink is
-/// not what tells the two apart; but there the constants move from level 3 to level 4 by
-/// less than 1e-6 (stick set), and on the reloading's data by over a hundred times that:
-/// the noise in which the reloading's root is lost (section 22; this assertion records it,
-/// and goes when the noise is removed).
+/// w1*) give the same picture on the same scan (the ends in units of w1*). On both the
+/// stick set's constants move from level 3 to level 4 by less than 1e-6 (on the reloading's
+/// data 3.7e-7, against 6.5e-5 .. 9.4e-5 before the unloaded state's kinks listed the loaded
+/// c2*, section 22).
 #[test]
 #[ignore = "slow: 11-16 s (two runs, the machine shared), the ply's loaded and unloaded states and 36 solves"]
 fn reloading_corner_data_and_the_kink() {
@@ -625,10 +624,11 @@ fn reloading_corner_data_and_the_kink() {
         "level 3 to 4, reloading: {:.2e} {:.2e} {:.2e}; first unloading: {:.2e} {:.2e} {:.2e}",
         n_re[0], n_re[1], n_re[2], n_first[0], n_first[1], n_first[2]
     );
-    // the first unloading's scan is smooth at fixed ends, the reloading's is not (section
-    // 22: its root is lost in this noise)
+    // both scans are smooth at fixed ends: the stick set's constants move by less than 1e-6
+    // between the levels (section 22: on the reloading only with the unloaded state's kinks
+    // listing the loaded c2*; without it 6.5e-5 and 9.4e-5)
     assert!(n_first[1].max(n_first[2]) < 1e-6);
-    assert!(n_re[1].min(n_re[2]) > 100.0 * n_first[1].max(n_first[2]));
+    assert!(n_re[1].max(n_re[2]) < 1e-6);
     // the columns: 0.3, 0.7, 0.9, 0.98, 1.03, 1.13, 0.999, 1.001, 1.01 (a1/w); on the
     // reloading the stick set's first constant changes sign between 0.98 w and 1.03 w
     for row in &rows {
@@ -740,7 +740,8 @@ fn measure_reloading_outer_model() {
 /// Where the reloading's outer model picks up its noise (docs/theory_tangential.md section
 /// 22; the ply at Q = -0.9 Q*, level 3, ends (0.1, 1.03, 1.0) w): the data are the unloaded
 /// state to (1e-8, 1e-5) ("a") and to (1e-10, 1e-5) ("b"); prints the two data's forcing at
-/// points near both ends (their change relative to bq p), the constants on a, on b, on a with
+/// points near both ends (their change relative to bq p); then, on the data's kinks less the
+/// loaded c2* (the frame that misses it), the constants on a, on b, on a with
 /// b's forcing in a region or everywhere, and on a with b's forcing and one of b's kinks; and
 /// the level 3 to 4 change on b at ends away from the kink, with b's kinks and with the
 /// loaded state's c2* added to them. Asserts nothing (13 s in one run).
@@ -756,6 +757,7 @@ fn measure_reloading_noise_source() {
         hi: f64,
         kink_from_b: Option<usize>,
         extra: Option<super::super::unload::Kink>,
+        c2: f64,
     }
     impl Start for Hybrid {
         fn coupling(&self) -> &Coupling {
@@ -765,9 +767,16 @@ fn measure_reloading_noise_source() {
             self.a.qp()
         }
         fn kinks(&self) -> Vec<super::super::unload::Kink> {
-            let mut k = self.a.kinks();
+            // the data's kinks without the loaded c2* (the unloaded state's list with it is
+            // the fix this measures), then `extra`
+            let strip = |v: Vec<super::super::unload::Kink>| -> Vec<_> {
+                v.into_iter()
+                    .filter(|c| (c.opx - self.c2).abs() > 1e-9)
+                    .collect()
+            };
+            let mut k = strip(self.a.kinks());
             if let Some(i) = self.kink_from_b {
-                k[i] = self.b.kinks()[i];
+                k[i] = strip(self.b.kinks())[i];
             }
             if let Some(x) = self.extra {
                 k.push(x);
@@ -794,6 +803,7 @@ fn measure_reloading_noise_source() {
     let k = ply();
     let q_star = 0.6 * k.mu;
     let m = Arc::new(monotonic(&k, q_star, 1e-10, 1e-8).unwrap());
+    let c2_opx = 1.0 - m.stick_set().1;
     let ua = Arc::new(unload(&m, -q_star, 1e-8, 1e-5).unwrap());
     let ub = Arc::new(unload(&m, -q_star, 1e-10, 1e-5).unwrap());
     println!(
@@ -857,6 +867,7 @@ fn measure_reloading_noise_source() {
             hi: 0.0,
             kink_from_b: None,
             extra,
+            c2: c2.opx,
         };
         println!("b's kinks {:?}", bb.kinks());
         for f in [1.03, 1.3, 2.0, 5.0] {
@@ -879,8 +890,17 @@ fn measure_reloading_noise_source() {
             }
         }
     }
-    println!("a {:?}", sig(&*a));
-    println!("b {:?}", sig(&*b));
+    let alone = |d: &Arc<Mirror>| Hybrid {
+        a: d.clone(),
+        b: d.clone(),
+        lo: 0.0,
+        hi: 0.0,
+        kink_from_b: None,
+        extra: None,
+        c2: c2_opx,
+    };
+    println!("a {:?}", sig(&alone(&a)));
+    println!("b {:?}", sig(&alone(&b)));
     for (lo, hi, name) in [
         (w, 0.0, "b on u < w"),
         (0.0, 1e-3, "b on 1 - x < 1e-3"),
@@ -894,11 +914,13 @@ fn measure_reloading_noise_source() {
             hi,
             kink_from_b: None,
             extra: None,
+            c2: c2_opx,
         };
         println!("{name}: {:?}", sig(&h));
     }
     println!("kinks a {:?}\nkinks b {:?}", a.kinks(), b.kinks());
-    for i in 0..a.kinks().len() {
+    // the two kinks of the frame without c2*: w and the mirrored a1**
+    for i in 0..2 {
         let h = Hybrid {
             a: a.clone(),
             b: b.clone(),
@@ -906,7 +928,101 @@ fn measure_reloading_noise_source() {
             hi: 0.0,
             kink_from_b: Some(i),
             extra: None,
+            c2: c2_opx,
         };
         println!("b's forcing and b's kink {i}: {:?}", sig(&h));
     }
+}
+
+/// The outer model on the ply's first reloading step, Q = -0.9 Q* (docs/theory_tangential.md
+/// section 22; the mirrored unloading at 0.9 Q*): the chord method from (e2, a1, 1 - a2) =
+/// (0.1, 1.03, 1.0) w at levels 3, 4, 5 (w = 1 - a2**), each from the one before. Asserts
+/// the root at every level (at levels 4-5 the layer's border constant below 1e-5, the stick
+/// set's below 1e-8), the ends at levels 4 and 5 within 1e-5 of each other relatively;
+/// on the level-5 state: int p = 1 and int q = Q/P by the independent quadrature, (R1)-(R2)
+/// between collocation points below 1e-6 (relative, as the unloading's), the slip signs
+/// (the zone at +1 slipping in -x, the zone at -1 in +x) and the layer's margin above the
+/// outer field's first zero ([`Unloading::admissible`], `layer_check`).
+#[test]
+#[ignore = "slow: about 25 s, the ply's loaded and unloaded states and three levels"]
+fn outer_model_on_the_ply_reloading_step() {
+    use super::super::unload::Level;
+    use super::super::unload::corner::outer_level;
+    let t = std::time::Instant::now();
+    let (mirror, _, q_star) = mirrored_unloaded_ply();
+    let w = mirror.kinks()[0].opx;
+    let qp = 0.9 * q_star;
+    let mut jac = None;
+    let mut x = [0.1 * w, 1.03 * w, w];
+    let mut ends = Vec::new();
+    let mut last = None;
+    for level in [3, 4, 5] {
+        let o = outer_level(&*mirror, x, qp, level, 1e-8, &mut jac).unwrap();
+        println!(
+            "level {level}: 1 + e2 = {:.8e}, 1 + a1 = {:.8e}, 1 - a2 = {:.8e}, constants \
+             {:.1e} {:.1e} {:.1e}, step {:.1e}, {} solves; {:?}",
+            o.x[0],
+            o.x[1],
+            o.x[2],
+            o.state.sigma[0],
+            o.state.sigma[1],
+            o.state.sigma[2],
+            o.step,
+            o.solves,
+            t.elapsed()
+        );
+        if level > 3 {
+            assert!(o.state.sigma[0].abs() < 1e-5);
+            assert!(o.state.sigma[1].abs().max(o.state.sigma[2].abs()) < 1e-8);
+        }
+        x = o.x;
+        ends.push(o.x);
+        last = Some(o);
+    }
+    for (five, four) in ends[2].iter().zip(&ends[1]) {
+        assert!((five - four).abs() < 1e-5 * five, "{five:e} {four:e}");
+    }
+    let o = last.unwrap();
+    let u = Unloading {
+        loaded: mirror.clone(),
+        qp,
+        level: Level {
+            wa: o.x[1],
+            w2: Some(o.x[2]),
+            layer: Some(o.x[0]),
+            state: o.state,
+            step: o.step,
+            solves: o.solves,
+        },
+        c_error: 0.0,
+        traction_error: 0.0,
+        levels: 3,
+        solves: 0,
+        trace: Vec::new(),
+    };
+    let k = *mirror.coupling();
+    let (ip, iq) = quadrature_forces(edge_exponent(&k), &u.level.state);
+    let res = u
+        .level
+        .state
+        .residual_between_points(&|a: f64, b: f64| mirror.forcing(a, b));
+    println!(
+        "int p - 1 = {:.1e}, int q - Q/P = {:.1e} (mirrored frame), residual {res:.1e}",
+        ip - 1.0,
+        iq - qp
+    );
+    assert!((ip - 1.0).abs() < 1e-9 && (iq - qp).abs() < 1e-9);
+    assert!(res < 1e-6);
+    u.admissible().unwrap();
+    let (u0, b) = u.layer_check().unwrap();
+    let (lead, trail) = u.zone_slips();
+    println!(
+        "u0 = {u0:.2e}, |B| = {b:.2e}; slips (leading, mirrored) {:.2e} .. {:.2e}, trailing \
+         {:.2e} .. {:.2e}; {:?}",
+        lead[0].1,
+        lead[lead.len() - 1].1,
+        trail[0].1,
+        trail[trail.len() - 1].1,
+        t.elapsed()
+    );
 }
