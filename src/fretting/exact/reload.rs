@@ -21,9 +21,9 @@
 //! converge there (the levels' tractions stay 5e-4 .. 9e-3 apart) and slips backwards at +1:
 //! it is refused (NoConvergence or NoAdmissibleSolution) along the whole branch. The
 //! corner's outer model (section 20) applies to the mirrored data (its corner is the
-//! unloaded trailing zone, (O1) with w = 1 - a2**), but its border constants are too noisy
-//! there for the chord method to find the root, so it is not routed here (section 22: the
-//! unloaded state's kinks miss the loaded kink c2* its forcing carries beyond its stick set).
+//! unloaded trailing zone, (O1) with w = 1 - a2**) and finds the first reloading step's root
+//! (section 22), but is not routed here yet: its march to +Q*, its ladder's estimates and
+//! the comparison with the grid are not done.
 
 #[cfg(test)]
 pub(crate) mod tests;

@@ -554,7 +554,7 @@ fn mirrored_unloaded_ply() -> (Arc<Mirror>, Arc<super::super::Monotonic>, f64) {
 /// data 3.7e-7, against 6.5e-5 .. 9.4e-5 before the unloaded state's kinks listed the loaded
 /// c2*, section 22).
 #[test]
-#[ignore = "slow: 11-16 s (two runs, the machine shared), the ply's loaded and unloaded states and 36 solves"]
+#[ignore = "slow: about 20 s (19-23 s in three runs, the machine shared), the ply's loaded and unloaded states and 36 solves"]
 fn reloading_corner_data_and_the_kink() {
     use super::super::unload::corner::outer_fixed;
     let t = std::time::Instant::now();
