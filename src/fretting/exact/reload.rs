@@ -19,7 +19,11 @@
 //! friction bound and the reloading pushes it towards the bound, the mirror of the
 //! unloading's corner above -0.48 Q* (section 13). On the ply the three-zone answer does not
 //! converge there (the levels' tractions stay 5e-4 .. 9e-3 apart) and slips backwards at +1:
-//! it is refused (NoConvergence or NoAdmissibleSolution) along the whole branch.
+//! it is refused (NoConvergence or NoAdmissibleSolution) along the whole branch. The
+//! corner's outer model (section 20) applies to the mirrored data (its corner is the
+//! unloaded trailing zone, (O1) with w = 1 - a2**) and finds the first reloading step's root
+//! (section 22), but is not routed here yet: its march to +Q*, its ladder's estimates and
+//! the comparison with the grid are not done.
 
 #[cfg(test)]
 pub(crate) mod tests;

@@ -234,7 +234,13 @@ impl Start for Mirror {
 
 /// An unloading state as the data of the next branch: its forcing is singular at a1 (the
 /// leading zone left of it) and a2 (the trailing zone right of it), and inside (a1, a2),
-/// where it equals its own data's forcing by (U2), at that data's kinks there. On (a1, a2)
+/// where it equals its own data's forcing by (U2), at that data's kinks there; and at the
+/// data's kinks in the leading zone beyond the layer that are singular seen from the stick
+/// set (`seen_from_right`: the data's forcing the stick set reads continues singularly to
+/// them; on the ply's unloaded state c2*, 0.019 beyond a1). Without that kink the
+/// reloading's stick set, which covers it, is neither split nor its gap rule cut there, and
+/// the outer model's border constants move 6.5e-5 .. 9.4e-5 between levels 3 and 4 at fixed
+/// ends, against 3.7e-7 with it (docs/theory_tangential.md section 22). On (a1, a2)
 /// the forcing is read from the data (exact by (U2), where the state's own H[q] + bq p
 /// carries its residual), elsewhere from the state.
 impl<D: Start + ?Sized> Start for Unloading<D> {
@@ -255,6 +261,13 @@ impl<D: Start + ?Sized> Start for Unloading<D> {
                 seen_from_left: true,
             });
         }
+        let e2 = self.level.layer.unwrap_or(0.0);
+        out.extend(
+            self.loaded
+                .kinks()
+                .into_iter()
+                .filter(|c| c.opx > e2 && c.opx < wa && c.seen_from_right),
+        );
         out.push(Kink {
             opx: wa,
             slip_left: true,
