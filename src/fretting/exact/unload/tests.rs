@@ -438,6 +438,28 @@ fn pattern_on_the_grid() {
     }
 }
 
+/// The ply's first unloading (Q* = 0.6 mu P) over its three-zone phase -0.485 Q* .. -Q*:
+/// the states at the ends of n equal load steps (to (1e-8, 1e-5)).
+fn three_zone_phase(n: usize) -> Vec<Unloading> {
+    let q_star = 0.18;
+    let m = Arc::new(monotonic(&ply(), q_star, 1e-10, 1e-6).unwrap());
+    let q0 = -0.485 * q_star;
+    let states: Vec<Unloading> = (0..=n)
+        .map(|j| {
+            let qp = q0 + (-q_star - q0) * j as f64 / n as f64;
+            unload(&m, qp, 1e-8, 1e-5).unwrap()
+        })
+        .collect();
+    states
+}
+
+/// (T14) summed over the steps between every stride-th of `states` ([`dissipation`]).
+fn summed(states: &[Unloading], stride: usize) -> f64 {
+    (0..(states.len() - 1) / stride)
+        .map(|j| dissipation(&states[j * stride], &states[(j + 1) * stride]))
+        .sum()
+}
+
 /// The dissipation of the ply's first unloading Q* -> -Q* (Q* = 0.6 mu P) from the exact
 /// branch, against the grid LCP history's (N = 200, 20, 40 and 80 steps, extrapolated in
 /// the steps with order 1; docs/theory_tangential.md section 14): the three-zone phase from
@@ -448,22 +470,10 @@ fn pattern_on_the_grid() {
 fn dissipation_of_the_first_unloading() {
     let k = ply();
     let q_star = 0.18;
-    let m = Arc::new(monotonic(&k, q_star, 1e-10, 1e-6).unwrap());
     let t = std::time::Instant::now();
-    let q0 = -0.485 * q_star;
-    let n = 8;
-    let states: Vec<Unloading> = (0..=n)
-        .map(|j| {
-            let qp = q0 + (-q_star - q0) * j as f64 / n as f64;
-            unload(&m, qp, 1e-8, 1e-5).unwrap()
-        })
-        .collect();
+    let states = three_zone_phase(8);
     let solved = t.elapsed().as_secs_f64();
-    let sum = |stride: usize| {
-        (0..n / stride)
-            .map(|j| dissipation(&states[j * stride], &states[(j + 1) * stride]))
-            .sum::<f64>()
-    };
+    let sum = |stride| summed(&states, stride);
     let (w8, w4, w2) = (sum(1), sum(2), sum(4));
     let exact = w8 + (w8 - w4) / 3.0;
     let before = states[0].slip_work();
@@ -1462,23 +1472,10 @@ fn hand_over_on_the_ply() {
 #[test]
 #[ignore = "measurement: minutes"]
 fn measure_three_zone_phase_dissipation() {
-    let k = ply();
-    let q_star = 0.18;
-    let m = Arc::new(monotonic(&k, q_star, 1e-10, 1e-6).unwrap());
     let t = std::time::Instant::now();
-    let q0 = -0.485 * q_star;
     let n = 32;
-    let states: Vec<Unloading> = (0..=n)
-        .map(|j| {
-            let qp = q0 + (-q_star - q0) * j as f64 / n as f64;
-            unload(&m, qp, 1e-8, 1e-5).unwrap()
-        })
-        .collect();
-    let sum = |stride: usize| {
-        (0..n / stride)
-            .map(|j| dissipation(&states[j * stride], &states[(j + 1) * stride]))
-            .sum::<f64>()
-    };
+    let states = three_zone_phase(n);
+    let sum = |stride| summed(&states, stride);
     let w: Vec<(usize, f64)> = [8, 4, 2, 1].iter().map(|&s| (n / s, sum(s))).collect();
     for pair in w.windows(2) {
         let ((s0, w0), (s1, w1)) = (pair[0], pair[1]);
