@@ -435,13 +435,7 @@ impl JacobiFamily {
         }
         // SAFETY: `lane` holds four f64
         unsafe { _mm256_storeu_pd(lane.as_mut_ptr(), cur) };
-        for (j, &(_, _, at, t0)) in lanes.iter().enumerate() {
-            let norm = t0 / lane[j];
-            for v in &mut out[at + 1..at + n] {
-                *v *= norm;
-            }
-            out[at] = t0;
-        }
+        self.normalise(lanes, &lane, out);
     }
 
     /// [`JacobiFamily::backward`], one lane after the other at each degree.
@@ -472,9 +466,15 @@ impl JacobiFamily {
                 }
             }
         }
-        for (j, &(_, _, at, t0)) in lanes.iter().enumerate() {
-            let norm = t0 / cur[j];
-            for v in &mut out[at + 1..at + n] {
+        self.normalise(lanes, &cur, out);
+    }
+
+    /// T_k = T_0 f_k / f_0 for each lane of [`JacobiFamily::backward`], from its unnormalised
+    /// f_k in `out` and its f_0.
+    fn normalise(&self, lanes: &[(Point, usize, usize, f64)], f0: &[f64], out: &mut [f64]) {
+        for (&(_, _, at, t0), &f0) in lanes.iter().zip(f0) {
+            let norm = t0 / f0;
+            for v in &mut out[at + 1..at + self.n] {
                 *v *= norm;
             }
             out[at] = t0;
