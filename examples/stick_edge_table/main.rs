@@ -6,17 +6,22 @@
 //! the number of patches and COUPLED solves, and the largest bound).
 //!
 //! Covered: b* from [`B_HIGH`] to 0.99, mu~ from the table's lower edge (the full-slip law's
-//! c = 1e-11) up to at least [`MU_HI`]; b* from [`B_FROM`] to B_HIGH, zeta from [`ZETA_BELOW`]
-//! up to tops short of the thin slip zones ([`BELOW`]). Each patch starts at `ROWS` x `COLS` Chebyshev points;
+//! c = 1e-11) up to at least [`MU_HI`]; b* from [`B_FROM`] to B_HIGH, zeta from 0 up to the
+//! tops of [`BELOW`] and on into the thin slip zones ([`THIN`]). Each patch starts at
+//! `ROWS` x `COLS` Chebyshev points;
 //! where its coefficient tail (the last two rows and columns, times the patch's largest
 //! c (1 - c)) exceeds [`TAIL_TARGET`] it is halved along the direction with the larger tail.
 //! Accepted patches are then checked at [`CHECKS`] random points against COUPLED; the bound is
 //! the larger of the tail and `SAFETY` times the largest error found there, plus the nodes'
-//! tolerance.
+//! largest relative error in lc times the patch's largest c (1 - c).
 //!
-//! Nodes are solved to |dc| <= 4 c (1 - c) [`NODE_REL`] (a relative accuracy in lc: the
-//! interpolant spreads a node's error in lc over the whole patch, where c (1 - c) may be
-//! far larger than at the node).
+//! Nodes are solved to a relative accuracy in lc of [`NODE_REL`] over the patch's largest
+//! c (1 - c) ([`node_rel`]): the interpolant spreads a node's error in lc over the whole
+//! patch, where c (1 - c) may be far larger than at the node. The strips of [`BELOW`] and
+//! above b* = 0.25 were built with the rule 4 min(c, 1 - c) NODE_REL at every node, which is
+//! the same where a patch reaches c = 1/2 and stricter elsewhere; [`THIN`] and the small stick
+//! zones below [`BELOW`] (`--strip 10` .. `21`, 3.5 min on 2 cores, 32 patches, 5312 solves)
+//! with this one.
 
 #[path = "../support/mod.rs"]
 mod support;
@@ -64,7 +69,7 @@ const ROWS: usize = 10;
 const COLS: usize = 16;
 /// Largest accepted coefficient tail, in c.
 const TAIL_TARGET: f64 = 5e-12;
-/// Relative accuracy in lc of the nodes.
+/// Accuracy of the nodes in c where c (1 - c) is largest in their patch ([`node_rel`]).
 const NODE_REL: f64 = 1e-12;
 /// Random checks per patch.
 const CHECKS: usize = 6;
@@ -74,30 +79,66 @@ const MAX_DEPTH: usize = 4;
 /// A solved node: (lc, c (1 - c), tolerance reached in c), or why COUPLED failed.
 type Node = Result<(f64, f64, f64), String>;
 
-/// COUPLED's stick edge at table coordinates.
-fn solve_node(beta: f64, zeta: f64) -> Node {
+/// Who solves a strip's nodes.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Solver {
+    /// The panels' root search (`coupled::solve`), which never looks at the table.
+    Panels,
+    /// The spectral solver from its own guess of the stick edge
+    /// (`coupled::solve_spectral_untabulated`), the panels where it misses the tolerance:
+    /// in the thin slip zones below b* = 0.25, where a panel node to the tolerances below
+    /// takes 2-50 s and a spectral one 16-32 ms (measured at b* = 0.02 .. 0.245,
+    /// 1 - c = 2e-11 .. 9e-8: relative accuracy 1e-9 in lc met at five of six points, the
+    /// panels agreeing within 9e-11 of c (1 - c); 1e-11 missed at all six).
+    Spectral,
+}
+
+/// COUPLED's stick edge at table coordinates to |dc| <= `rel` min(c, 1 - c) (relative in
+/// lc), or where `rel` is None to 1e-8 (the guess that sets the patch's node rule).
+fn solve_node(beta: f64, zeta: f64, solver: Solver, rel: Option<f64>) -> Node {
     let (b, mu) = coupling_at(beta, zeta);
     let k = Coupling { bp: b, bq: b, mu };
-    let guess = coupled::solve(&k, 1e-8).map_err(|e| format!("b* {b} mu~ {mu}: {e}"))?;
+    let at = |tol: f64| -> orthoslip::Result<orthoslip::coupled::CoupledSolution> {
+        if solver == Solver::Spectral
+            && let Some(s) = coupled::solve_spectral_untabulated(&k, tol, f64::INFINITY)
+        {
+            return Ok(s);
+        }
+        coupled::solve(&k, tol)
+    };
+    let done = |s: orthoslip::coupled::CoupledSolution| {
+        let e = s.edge();
+        let lc = e.c.ln() - e.one_minus_c.ln();
+        (lc, e.c * e.one_minus_c, s.numerical_error())
+    };
+    let guess = at(1e-8).map_err(|e| format!("b* {b} mu~ {mu}: {e}"))?;
+    let Some(rel) = rel else {
+        return Ok(done(guess));
+    };
     let e = guess.edge();
-    let scale = 4.0 * e.c.min(e.one_minus_c);
-    let mut tol = (scale * NODE_REL).max(1e-300);
+    let scale = e.c.min(e.one_minus_c);
+    let mut tol = (scale * rel).max(1e-300);
     loop {
-        match coupled::solve(&k, tol) {
-            Ok(s) => {
-                let e = s.edge();
-                let lc = e.c.ln() - e.one_minus_c.ln();
-                return Ok((lc, e.c * e.one_minus_c, s.numerical_error()));
-            }
-            Err(_) if tol < scale * 1e-10 => tol *= 10.0,
+        match at(tol) {
+            Ok(s) => return Ok(done(s)),
+            Err(_) if tol < scale * rel * 1e2 => tol *= 10.0,
             Err(err) => return Err(format!("b* {b} mu~ {mu} tol {tol:e}: {err}")),
         }
     }
 }
 
+/// The node rule of a patch whose largest c (1 - c) (at the guesses) is `largest`: relative
+/// accuracy NODE_REL / largest in lc, so that a node's error, spread by the interpolant over
+/// the patch, moves c by about NODE_REL wherever c (1 - c) is largest (for a patch reaching
+/// c = 1/2 this is the former rule 4 min(c, 1 - c) NODE_REL; in thin slip zones and small
+/// stick zones it is that much looser, what lets those nodes be solved in milliseconds).
+fn node_rel(largest: f64) -> f64 {
+    NODE_REL / largest.max(1e-300)
+}
+
 /// Solves all points on the available threads.
-fn solve_all(points: &[(f64, f64)]) -> Vec<Node> {
-    support::parallel::map(points, |&(beta, zeta)| solve_node(beta, zeta))
+fn solve_all(points: &[(f64, f64)], solver: Solver, rel: Option<f64>) -> Vec<Node> {
+    support::parallel::map(points, |&(beta, zeta)| solve_node(beta, zeta, solver, rel))
 }
 
 struct Built {
@@ -110,10 +151,21 @@ struct Built {
 }
 
 /// A patch and its splits, appended to `out`; returns the COUPLED solves made.
-fn build(beta: [f64; 2], zeta: [f64; 2], depth: usize, out: &mut Vec<Built>) -> usize {
+fn build(
+    beta: [f64; 2],
+    zeta: [f64; 2],
+    solver: Solver,
+    depth: usize,
+    out: &mut Vec<Built>,
+) -> usize {
     let started = Instant::now();
     let points = nodes(beta, zeta, ROWS, COLS);
-    let solved = solve_all(&points);
+    let largest = solve_all(&points, solver, None)
+        .iter()
+        .map(|r| r.as_ref().map_or(0.25, |n| n.1))
+        .fold(0.0, f64::max);
+    let rel = node_rel(largest);
+    let solved = solve_all(&points, solver, Some(rel));
     let mut values = Vec::with_capacity(points.len());
     let (mut scale, mut node_tol) = (0.0f64, 0.0f64);
     let mut thinnest = f64::INFINITY;
@@ -122,7 +174,8 @@ fn build(beta: [f64; 2], zeta: [f64; 2], depth: usize, out: &mut Vec<Built>) -> 
             Ok((lc, cw, tol)) => {
                 values.push(*lc);
                 scale = scale.max(*cw);
-                node_tol = node_tol.max(*tol);
+                // the node's error in lc, spread over the patch below
+                node_tol = node_tol.max(tol / cw);
                 thinnest = thinnest.min(1.0 / (1.0 + lc.exp()));
             }
             Err(e) => panic!("node failed: {e}"),
@@ -152,12 +205,12 @@ fn build(beta: [f64; 2], zeta: [f64; 2], depth: usize, out: &mut Vec<Built>) -> 
         let mut n = points.len();
         if row_tail > col_tail {
             let m = 0.5 * (beta[0] + beta[1]);
-            n += build([beta[0], m], zeta, depth + 1, out);
-            n += build([m, beta[1]], zeta, depth + 1, out);
+            n += build([beta[0], m], zeta, solver, depth + 1, out);
+            n += build([m, beta[1]], zeta, solver, depth + 1, out);
         } else {
             let m = 0.5 * (zeta[0] + zeta[1]);
-            n += build(beta, [zeta[0], m], depth + 1, out);
-            n += build(beta, [m, zeta[1]], depth + 1, out);
+            n += build(beta, [zeta[0], m], solver, depth + 1, out);
+            n += build(beta, [m, zeta[1]], solver, depth + 1, out);
         }
         return n;
     }
@@ -174,13 +227,14 @@ fn build(beta: [f64; 2], zeta: [f64; 2], depth: usize, out: &mut Vec<Built>) -> 
         })
         .collect();
     let mut worst = 0.0f64;
-    for (p, r) in checks.iter().zip(solve_all(&checks)) {
-        let (lc, _, tol) = r.unwrap_or_else(|e| panic!("check failed: {e}"));
+    for (p, r) in checks.iter().zip(solve_all(&checks, solver, Some(rel))) {
+        let (lc, cw, tol) = r.unwrap_or_else(|e| panic!("check failed: {e}"));
         let v = evaluate(&coef, (ROWS, COLS), (beta, zeta), *p);
         worst = worst.max(StickEdge::from_logit(v).distance(StickEdge::from_logit(lc)));
-        node_tol = node_tol.max(tol);
+        node_tol = node_tol.max(tol / cw);
     }
-    let bound = tail.max(SAFETY * worst) + node_tol;
+    // the nodes' largest error in lc at the patch's largest c (1 - c)
+    let bound = tail.max(SAFETY * worst) + node_tol * scale;
     eprintln!("  accepted: checked error {worst:.1e}, bound {bound:.1e}");
     out.push(Built {
         beta,
@@ -202,22 +256,101 @@ fn strips() -> Vec<f64> {
         .collect()
 }
 
-/// Every strip: its beta range and zeta cuts. First the strips up to [`MU_HI`], from zeta = 0,
-/// then those of [`BELOW`] (so that the patches above b* = 0.25 keep their place in the
-/// generated file).
-fn all_strips() -> Vec<([f64; 2], Vec<f64>)> {
-    let mut out: Vec<([f64; 2], Vec<f64>)> = strips()
+/// The thin slip zones below b* = 0.25, above the tops of [`BELOW`]: (b* from, b* to, top).
+/// Each strip runs from its [`BELOW`] strip's top to its own; None is the zeta at which the
+/// edge exponent g falls to [`G_TOP`] at b* to. Nodes by [`Solver::Spectral`].
+///
+/// The tops are where the near-bonded law takes over c alone (its estimate meets 1e-10 where
+/// 1 - c is below about 2e-11) at the strip's largest b*, while at its smallest b* the
+/// thinnest slip zone is still above the spectral solver's `W_MIN` (2.5e-13). Measured
+/// (1 - c from `coupled::solve_to` at 1e-13; the zeta from which the law answers c alone at
+/// 1e-10, z_L, and that at which 1 - c falls to 2.5e-13, z_W; steps of 0.1 in zeta):
+///
+/// | b* | 0.02 | 0.05 | 0.08 | 0.11 | 0.13 | 0.145 | 0.16 |
+/// |---|---|---|---|---|---|---|---|
+/// | z_L | 5.0 | 5.0 | 5.2 | 5.4 | 5.6 | 5.9 | 6.5 |
+/// | z_W | 5.1 | 5.2 | 5.4 | 5.7 | 6.2 | > 7.5 | none |
+///
+/// (at b* = 0.15 1 - c levels off at 2.1e-13, at 0.16 at 1.7e-12, at 0.2 at 8.7e-10, at
+/// 0.245 at 8.7e-8 as mu~ grows), so from b* = 0.16 on the strips run up to [`G_TOP`].
+const THIN: [(f64, f64, Option<f64>); 9] = [
+    (0.02, 0.05, Some(5.05)),
+    (0.05, 0.08, Some(5.2)),
+    (0.08, 0.1, Some(5.35)),
+    (0.1, 0.12, Some(5.5)),
+    (0.12, 0.135, Some(5.75)),
+    (0.135, 0.15, Some(6.2)),
+    (0.15, 0.16, Some(6.6)),
+    (0.16, 0.175, None),
+    (0.175, 0.25, None),
+];
+
+/// The edge exponent g at the top of the thin strips that run on with friction: the
+/// spectral solver serves g >= 0.002 (`spectral::G_MIN`); above that friction the panels
+/// answer (large friction).
+const G_TOP: f64 = 0.0025;
+
+/// zeta cuts inside the strips of [`THIN`] that run up to [`G_TOP`], and below the tops of
+/// the others. The node rule ([`node_rel`]) asks a relative accuracy in lc of NODE_REL over
+/// the patch's largest c (1 - c); in one patch from a strip's foot (1 - c about 1e-3) to its
+/// top (1 - c down to 3e-12) that is 3e-9 at slip zones of 1e-11, which the spectral solver
+/// missed at three of six such points (b* = 0.02 .. 0.05, zeta = 5 .. 5.05, 1 - c = 3e-12 ..
+/// 5e-11), handing them to the panels (tens of seconds each). Cut where 1 - c has fallen to
+/// about 1e-7, each patch above asks 1e-5 or less.
+const THIN_CUTS: [f64; 3] = [5.0, 6.0, 8.0];
+
+/// The cuts below a fixed top of [`THIN`]: at top - 0.5 and top - 0.25 ([`THIN_CUTS`]).
+const BELOW_TOP: [f64; 2] = [0.5, 0.25];
+
+/// Every strip: its beta range, zeta cuts and node solver. First the strips up to
+/// [`MU_HI`], from zeta = 0, then those of [`BELOW`], of [`THIN`], and the small stick
+/// zones below [`BELOW`] (zeta = 0 .. [`ZETA_BELOW`], c = 1e-11 .. 1.3e-5, the panels'
+/// nodes: 60-320 ms each at the node rule there), so that the earlier patches keep their
+/// place in the generated file.
+fn all_strips() -> Vec<([f64; 2], Vec<f64>, Solver)> {
+    let mut out: Vec<([f64; 2], Vec<f64>, Solver)> = strips()
         .windows(2)
         .map(|w| {
             // zeta reaching MU_HI at the strip's smallest b* (where mu_lo is smallest)
             let top = coordinates(w[0].tanh(), MU_HI).1;
-            ([w[0], w[1]], vec![0.0, 2.0, 4.0, 6.0, 9.0, 13.0, top])
+            (
+                [w[0], w[1]],
+                vec![0.0, 2.0, 4.0, 6.0, 9.0, 13.0, top],
+                Solver::Panels,
+            )
         })
         .collect();
     out.extend(BELOW.iter().map(|&(b0, b1, top)| {
         (
             [b0.atanh(), b1.atanh()],
             vec![ZETA_BELOW, ZETA_CUT_BELOW, top],
+            Solver::Panels,
+        )
+    }));
+    out.extend(THIN.iter().map(|&(b0, b1, top)| {
+        let from = BELOW
+            .iter()
+            .find(|s| s.0 <= b0 && b1 <= s.1)
+            .expect("a thin strip inside a strip of BELOW")
+            .2;
+        let cuts = match top {
+            Some(t) => vec![from, t - BELOW_TOP[0], t - BELOW_TOP[1], t],
+            None => {
+                let mu = (std::f64::consts::PI * G_TOP).tan().recip() / b1;
+                let t = coordinates(b1, mu).1;
+                std::iter::once(from)
+                    .chain(THIN_CUTS)
+                    .chain(std::iter::once(t))
+                    .collect()
+            }
+        };
+        ([b0.atanh(), b1.atanh()], cuts, Solver::Spectral)
+    }));
+    out.extend(BELOW.iter().map(|&(b0, b1, _)| {
+        (
+            [b0.atanh(), b1.atanh()],
+            vec![0.0, ZETA_BELOW],
+            Solver::Panels,
         )
     }));
     out
@@ -253,12 +386,12 @@ fn main() -> std::io::Result<()> {
         .map(|i| args[i + 1].parse().expect("--strip takes a strip index"));
     let mut out = Vec::new();
     let mut solves = 0;
-    for (s, (beta, cuts)) in all_strips().into_iter().enumerate() {
+    for (s, (beta, cuts, solver)) in all_strips().into_iter().enumerate() {
         if only.is_some_and(|o| o != s) {
             continue;
         }
         for z in cuts.windows(2) {
-            solves += build(beta, [z[0], z[1]], 0, &mut out);
+            solves += build(beta, [z[0], z[1]], solver, 0, &mut out);
         }
     }
     if only.is_some() {
@@ -278,14 +411,18 @@ fn main() -> std::io::Result<()> {
     );
     src += &format!(
         "/// {} patches: over b* = {B_HIGH} .. {B_TO} from the full-slip law's c = {C_LO:e} up to \
-         mu~ = {MU_HI:e} at least; over b* = {B_FROM} .. {B_HIGH} from zeta = {ZETA_BELOW} up to \
-         zeta = {}.\npub(super) const PATCHES: &[Patch] = &[\n",
+         mu~ = {MU_HI:e} at least; over b* = {B_FROM} .. {B_HIGH} from zeta = 0 up to zeta = {} \
+         (the thin slip zones), and on to g = {G_TOP} from b* = {} on.\n\
+         pub(super) const PATCHES: &[Patch] = &[\n",
         out.len(),
-        BELOW
-            .iter()
-            .map(|&(b0, b1, top)| format!("{top} (b* = {b0} .. {b1})"))
+        THIN.iter()
+            .filter_map(|&(b0, b1, top)| top.map(|t| format!("{t} (b* = {b0} .. {b1})")))
             .collect::<Vec<_>>()
-            .join(", ")
+            .join(", "),
+        THIN.iter()
+            .find(|s| s.2.is_none())
+            .expect("a strip up to G_TOP")
+            .0
     );
     for p in &out {
         src += &patch_source(p);

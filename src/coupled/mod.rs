@@ -838,6 +838,21 @@ pub fn solve_panels_to(k: &Coupling, tol: f64, traction_tol: f64) -> Result<Coup
     solve_with(k, tol, traction_tol, false)
 }
 
+/// The spectral solver from its own guess of the stick edge ([`guessed_edge`]), never from
+/// the tabulated one: the node solves of `examples/stick_edge_table` in the thin slip zones
+/// below b* = 0.25 (so that a regenerated table does not interpolate itself). None where it
+/// does not serve the coupling or misses the tolerances (the panels, [`solve`], answer there).
+#[doc(hidden)]
+pub fn solve_spectral_untabulated(
+    k: &Coupling,
+    tol: f64,
+    traction_tol: f64,
+) -> Option<CoupledSolution> {
+    k.validate().ok()?;
+    validate_tolerance(tol).ok()?;
+    spectral_from(k, tol, traction_tol, false)
+}
+
 /// [`solve_to`], the spectral solver tried first where `spectral`.
 fn solve_with(
     k: &Coupling,
@@ -932,7 +947,7 @@ fn spectral_from(
             crate::spectral::from_edge(consts, lc, bound, tol, traction_tol, delta)?
         }
         None => {
-            // outside the table (below b* = 0.25 under or above its strips there,
+            // outside the table (below b* = 0.25 above its strips' tops there,
             // [`crate::stick_edge_table`]): from the best guess of the stick edge
             let e = guessed_edge(k, &r)?;
             let lc0 = e.c.ln() - e.one_minus_c.ln();
