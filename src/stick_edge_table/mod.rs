@@ -11,9 +11,11 @@
 //!   Below zeta = 0 the stick zone is below C_LO (the full-slip regime answers c there).
 //!
 //! Covered: b* = 0.25 .. 0.99 from zeta = 0 up to mu~ = 4e6 at least; below, b* = 0.02 .. 0.25
-//! from zeta = 0.75 (c = 1.3e-5) up to zeta = 4 .. 4.5 in three strips, short of the thin slip
-//! zones, where COUPLED's node solves take seconds (the generator's `BELOW`). The patches are
-//! a union of rectangles, not one: [`lookup`] is None outside them.
+//! from zeta = 0 up to the thin slip zones' tops (the generator's `THIN`): zeta = 5.05 .. 6.6
+//! for b* = 0.02 .. 0.16, where 1 - c has fallen to about 1e-11 and the near-bonded law
+//! answers c alone above, and from b* = 0.16 on up to the friction at which the edge
+//! exponent g falls to 0.0025 (mu~ = 400-730; the panels answer above). The patches are a
+//! union of rectangles, not one: [`lookup`] is None outside them.
 //!
 //! Each [`Patch`] is a tensor Chebyshev interpolant on a rectangle of (beta, zeta) from
 //! COUPLED's c at its Chebyshev points of the first kind. Its `bound` on |c_table - c| was
@@ -64,8 +66,8 @@ pub fn patches() -> &'static [Patch] {
 }
 
 /// The smallest rectangle of (beta, zeta) holding every patch. The patches do not fill it:
-/// below b* = 0.25 they start at zeta = 0.75 and stop at their strips' tops, and [`lookup`]
-/// is None at the rectangle's points outside them.
+/// below b* = 0.25 they stop at their strips' tops, and [`lookup`] is None at the
+/// rectangle's points outside them.
 pub fn extent() -> ([f64; 2], [f64; 2]) {
     let span = |f: fn(&Patch) -> [f64; 2]| {
         patches()
