@@ -5,7 +5,9 @@
 //! dissipation (docs/theory_tangential.md section 15); and the ply's corner at +1, where the
 //! three-zone pattern does not hold and the answer is refused.
 
-use super::super::unload::{Mirror, Start, Unloading, first_slip, unload, unload_level};
+use super::super::unload::{
+    Mirror, Start, Unloading, first_slip, three_zone, unload, unload_level,
+};
 use super::super::{contact_rule, distance, edge_exponent, monotonic, quadrature_forces};
 use std::sync::Arc;
 
@@ -266,8 +268,10 @@ fn goodman_reloading_matches_the_closed_form() {
 }
 
 /// The ply (Q* = 0.6 mu P) reloaded from -Q* to +Q*: there is no three-zone answer (its
-/// zone at +1 slips against its friction, section 15), and the reloading is refused. Loose
-/// tolerances, so that the ladder stops early.
+/// zone at +1 slips against its friction, section 15): the three-zone pattern (`three_zone`,
+/// the first answer [`reload`] tries) is refused. Loose tolerances, so that the ladder stops
+/// early. (`reload` itself then answers with the corner's outer model, section 23: the slow
+/// `reloaded_state_against_the_grid`.)
 ///
 /// Which refusal comes first is not a property of the problem but of where the search for
 /// the missing root ends, and that moves with the data at rounding level. Measured on this
@@ -289,7 +293,7 @@ fn ply_corner_is_refused() {
     let m = Arc::new(monotonic(&k, q_star, 1e-10, 1e-6).unwrap());
     let u = Arc::new(unload(&m, -q_star, 1e-8, 1e-5).unwrap());
     let mirror = Arc::new(Mirror { inner: u.clone() });
-    match reload(&mirror, q_star, 1e-5, 0.1) {
+    match three_zone(&mirror, -q_star, 1e-5, 0.1) {
         Err(Error::NoAdmissibleSolution(msg)) => {
             assert!(msg.contains("the leading zone"), "{msg}")
         }
@@ -298,7 +302,7 @@ fn ply_corner_is_refused() {
             "{msg}"
         ),
         Err(e) => panic!("refused for another reason: {e}"),
-        Ok(r) => panic!("answered: stick set {:?}", r.stick_set()),
+        Ok(r) => panic!("answered: stick set (mirrored) {:?}", r.stick_set()),
     }
 }
 
