@@ -1061,10 +1061,13 @@ fn grid_cycle(k: &Coupling, n: usize, q_star: f64) -> ([[f64; 3]; 2], bool) {
 }
 
 /// The ply (mu = 0.3, Q* = 0.6 mu P) loaded to Q*, unloaded to -Q* and reloaded to +Q* on the
-/// exact path (`ExactPath` at the exact run's tolerances (1e-8, 1e-5); the reversal at -Q*
-/// solves the reloading cold: the three-zone pattern, refused, then the corner's outer model
-/// marched from -Q*, docs/theory_tangential.md section 23), against the grid LCP history at
-/// N = 200 and 400 ([`grid_cycle`]). Asserts:
+/// exact path (`ExactPath` at the exact run's tolerances (1e-8, 1e-5)), reloaded in two
+/// steps: the reversal at -Q* solves the reloading to Q = 0 cold (the three-zone pattern,
+/// refused, then the corner's outer model marched from -Q*, docs/theory_tangential.md
+/// section 23), the step on to +Q* the outer model from the ends at Q = 0 (`unload_from`;
+/// the state at +Q* does not depend on the path, and the two steps cost 51 s against the
+/// one cold step's 60-70 s in `measure_reloading_dissipation`'s run), against the grid LCP
+/// history at N = 200 and 400 ([`grid_cycle`]). Asserts:
 /// - the answer is the outer model's (a layer stuck since -Q* at +1), its zones at both ends
 ///   inside the grid's first half panel at N = 800 (1/1600), and every grid node sticks over
 ///   the reloading (N = 200, 400; and 800 in `measure_reloaded_state_on_the_grid`);
@@ -1084,7 +1087,7 @@ fn grid_cycle(k: &Coupling, n: usize, q_star: f64) -> ([[f64; 3]; 2], bool) {
 ///   the reloaded state's difference from the grid at N = 400 below the unloaded state's,
 ///   computed alongside.
 #[test]
-#[ignore = "slow: 60-74 s in three runs (the machine shared), the exact path's three states (the reloading's cold march) and the grid at N = 200, 400"]
+#[ignore = "slow: about 55 s, the exact path's four states (the reloading's cold march to Q = 0) and the grid at N = 200, 400"]
 fn reloaded_state_against_the_grid() {
     use super::super::path::{Branch, ExactPath};
     use super::super::rule_on;
@@ -1108,10 +1111,11 @@ fn reloaded_state_against_the_grid() {
     path.load(-q_star).unwrap();
     let unloaded = path.clone();
     let t_un = t.elapsed();
+    path.load(0.0).unwrap();
     path.load(q_star).unwrap();
     println!(
         "exact path: loaded and unloaded {t_un:?}, reloaded {:?}; the path's dissipation over \
-         the reloading in one step {:.2e} (estimate {:.1e})",
+         the reloading in two steps {:.2e} (estimate {:.1e})",
         t.elapsed(),
         path.dissipated - unloaded.dissipated,
         path.dissipated_error - unloaded.dissipated_error
