@@ -1065,8 +1065,8 @@ fn grid_cycle(k: &Coupling, n: usize, q_star: f64) -> ([[f64; 3]; 2], bool) {
 /// steps: the reversal at -Q* solves the reloading to Q = 0 cold (the three-zone pattern,
 /// refused, then the corner's outer model marched from -Q*, docs/theory_tangential.md
 /// section 23), the step on to +Q* the outer model from the ends at Q = 0 (`unload_from`;
-/// the state at +Q* does not depend on the path, and the two steps cost 51 s against the
-/// one cold step's 60-70 s in `measure_reloading_dissipation`'s run), against the grid LCP
+/// the state at +Q* does not depend on the path; the two steps took 51 s in
+/// `measure_reloading_dissipation`'s run, one cold step 60-70 s here), against the grid LCP
 /// history at N = 200 and 400 ([`grid_cycle`]). Asserts:
 /// - the answer is the outer model's (a layer stuck since -Q* at +1), its zones at both ends
 ///   inside the grid's first half panel at N = 800 (1/1600), and every grid node sticks over
