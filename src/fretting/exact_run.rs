@@ -313,8 +313,13 @@ pub(super) fn solve(
     let normal = step(&path, &at, unit);
     // A probe: the state at Q* (the loading is path-independent, one solve), the first
     // unloading step, and the first reloading step from -Q* (the unloading is
-    // path-independent from Q*, one solve), so that a refusal there (bp > 0: the reloading's
-    // corner structure, not built) comes before the first loading's steps are spent.
+    // path-independent from Q*, one solve), so that a refusal there comes before the first
+    // loading's steps are spent. Where the first reloading step is the corner's outer model
+    // (bp > 0, a layer stuck since -Q* at +1: docs/theory_tangential.md section 23) the run
+    // would reverse at +Q* from a reloading state with that layer, which no branch takes as
+    // data yet (on the ply the layer persists up to +Q*): the probe asks for a reversal from
+    // the first step's state, refused at once, instead of the whole first cycle's steps. (A
+    // layer that vanished before +Q* would be refused too.)
     {
         let mut probe = path.clone();
         probe
@@ -332,6 +337,18 @@ pub(super) fn solve(
         reversed
             .load(back)
             .map_err(|e| in_run(&format!("cycle 0, reloading to Q/P = {back}"), e))?;
+        if reversed.corner_layer() {
+            reversed.load(-q_amp).map_err(|e| {
+                in_run(
+                    &format!(
+                        "cycle 0, reloading to Q/P = {back} (answered with the corner's stuck \
+                         layer at +1; the run's reversal at Q/P = {q_amp} would take such a \
+                         state as data)"
+                    ),
+                    e,
+                )
+            })?;
+        }
     }
     let mut first: Vec<Step> = Vec::new();
     for q in loads(0.0, q_amp, s) {

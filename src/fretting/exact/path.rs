@@ -23,8 +23,10 @@ use crate::problem::{Coupling, Profile};
 const COVERAGE: &str = "the exact solver covers the normal load, monotonic loading from \
     Q = 0, the first unloading (at bp > 0 through its corner, docs/theory_tangential.md \
     section 21) and the branches after it where they keep one stick set with a slip zone at \
-    each end (at bp = 0 with their full-stick ranges); the reloading's corner structure and \
-    a reversal from the first unloading's corner phase are not built yet (sections 15, 21)";
+    each end (at bp = 0 with their full-stick ranges), and at bp > 0 the reloading through \
+    its corner (section 23); a reversal from a state with the corner's stuck layer (the \
+    first unloading's corner phase, the reloading's corner) is not built yet (sections 21, \
+    23)";
 
 /// The loaded state is the data of the unloading after a reversal, and is solved to at
 /// least these tolerances (c1 + c2, and the tractions in the norm (T1)): on the ply the
@@ -612,6 +614,13 @@ impl ExactPath {
                 .is_some_and(|e2| if *flip { omx < e2 } else { opx < e2 }),
             _ => false,
         }
+    }
+
+    /// Whether the state is an answer of the corner's outer model (a layer stuck since the
+    /// branch's data at one end, docs/theory_tangential.md sections 21 and 23): a reversal
+    /// from it is refused.
+    pub(crate) fn corner_layer(&self) -> bool {
+        matches!(&self.branch, Branch::Unloading { u, .. } if u.level.layer.is_some())
     }
 
     /// The stick set [c1, c2] in the contact's frame.

@@ -15,15 +15,17 @@
 //! formula); above it b2 solves (T15). For the ply's bq at Q* = 0.6 mu P, Q_s = 1.09 Q*: the
 //! cycle shakes down after the first unloading.
 //!
-//! Limits (section 15): for bp > 0 the unloaded state's thin trailing zone at +1 sits on the
-//! friction bound and the reloading pushes it towards the bound, the mirror of the
-//! unloading's corner above -0.48 Q* (section 13). On the ply the three-zone answer does not
-//! converge there (the levels' tractions stay 5e-4 .. 9e-3 apart) and slips backwards at +1:
-//! it is refused (NoConvergence or NoAdmissibleSolution) along the whole branch. The
-//! corner's outer model (section 20) applies to the mirrored data (its corner is the
-//! unloaded trailing zone, (O1) with w = 1 - a2**) and finds the first reloading step's root
-//! (section 22), but is not routed here yet: its march to +Q*, its ladder's estimates and
-//! the comparison with the grid are not done.
+//! The corner (sections 15, 22, 23): for bp > 0 the unloaded state's thin trailing zone at
+//! +1 sits on the friction bound and the reloading pushes it towards the bound, the mirror
+//! of the unloading's corner above -0.48 Q* (section 13). On the ply the three-zone answer
+//! does not converge there (the levels' tractions stay 5e-4 .. 9e-3 apart) and slips
+//! backwards at +1: it is refused along the whole branch. The mirrored data's corner is the
+//! unloaded trailing zone, (O1) with w = 1 - a2** ([`Mirror`]'s `loaded_edge_at_corner`), so
+//! [`unload`] answers with the corner's outer model (section 20: a layer stuck since Q** at
+//! +1, the zone (b2, 1 - layer) slipping in -x, the zone at -1), marched from Q** by
+//! `outer_cold` and checked and estimated as the first unloading's (section 21). On the ply
+//! the layer persists up to +Q* (section 23), so a reversal from the reloaded state is
+//! refused (its data would carry the layer, `corner_layer`).
 
 #[cfg(test)]
 pub(crate) mod tests;
@@ -107,5 +109,16 @@ impl Start for Reloading {
     }
     fn sign(&self) -> f64 {
         -Start::sign(&self.mirrored)
+    }
+    fn loaded_edge_at_corner(&self) -> bool {
+        Start::slip_edge_at_far_corner(&self.mirrored)
+    }
+    fn slip_edge_at_far_corner(&self) -> bool {
+        Start::loaded_edge_at_corner(&self.mirrored)
+    }
+    /// A reloading answered by the corner's outer model has its layer at +1 in the contact's
+    /// frame: the next branch would need it as data, which no branch carries yet.
+    fn corner_layer(&self) -> bool {
+        Start::corner_layer(&self.mirrored)
     }
 }

@@ -27,7 +27,9 @@
 //! [`unload`] answers with the outer model ([`outer_cold`], section 21), with its own
 //! admissibility check ([`Unloading::layer_check`]) and estimates; [`unload_from`] follows
 //! the outer model's branch from an answer of it and hands over to the three-zone pattern
-//! where the layer vanishes.
+//! where the layer vanishes. The same route answers the reloading (the unloading of the
+//! mirrored unloaded state, [`Mirror`]), whose mirrored corner is the unloaded trailing zone
+//! ((O1) with w = 1 - a2**, docs/theory_tangential.md sections 22-23).
 
 pub(crate) mod corner;
 #[cfg(test)]
@@ -93,6 +95,13 @@ pub(crate) trait Start: Send + Sync {
     fn loaded_edge_at_corner(&self) -> bool {
         false
     }
+    /// Whether the corner x = +1 of this state is a slip zone on the friction bound with
+    /// q = +mu p and p ~ (1 - x)^(-g) below its last kink: (O1) seen from the other end, the
+    /// corner of the mirrored state ([`Mirror`]). An unloading state's trailing zone is one
+    /// (docs/theory_tangential.md section 22): the reloading's data.
+    fn slip_edge_at_far_corner(&self) -> bool {
+        false
+    }
     /// Whether this state is an answer of the corner's outer model (a layer stuck since its
     /// data, with the bonded field at -1 that no branch's bases carry as data yet).
     fn corner_layer(&self) -> bool {
@@ -125,6 +134,9 @@ impl<T: Start + ?Sized> Start for Arc<T> {
     }
     fn loaded_edge_at_corner(&self) -> bool {
         (**self).loaded_edge_at_corner()
+    }
+    fn slip_edge_at_far_corner(&self) -> bool {
+        (**self).slip_edge_at_far_corner()
     }
     fn corner_layer(&self) -> bool {
         (**self).corner_layer()
@@ -227,6 +239,16 @@ impl Start for Mirror {
     fn sign(&self) -> f64 {
         -self.inner.sign()
     }
+    /// The mirrored corner -1 is the inner state's +1: (O1) there when the inner state's +1
+    /// is a slip zone with q = +mu p (an unloading's trailing zone: the reloading's corner,
+    /// docs/theory_tangential.md section 22), so that [`unload`] routes the mirrored branch
+    /// to the corner's outer model as it routes the first unloading.
+    fn loaded_edge_at_corner(&self) -> bool {
+        self.inner.slip_edge_at_far_corner()
+    }
+    fn slip_edge_at_far_corner(&self) -> bool {
+        self.inner.loaded_edge_at_corner()
+    }
     fn corner_layer(&self) -> bool {
         self.inner.corner_layer()
     }
@@ -308,6 +330,11 @@ impl<D: Start + ?Sized> Start for Unloading<D> {
     }
     fn sign(&self) -> f64 {
         self.loaded.sign()
+    }
+    /// The trailing zone (a2, 1) slips with q = +mu p, and p ~ (1 - x)^(-g) at +1 (section
+    /// 13's local exponents): present wherever bp > 0.
+    fn slip_edge_at_far_corner(&self) -> bool {
+        self.level.w2.is_some()
     }
     fn corner_layer(&self) -> bool {
         self.level.layer.is_some()
@@ -551,7 +578,8 @@ const OUTER_FIRST: usize = 3;
 pub(crate) const KAPPA: f64 = 6.0;
 
 /// Whether [`unload`] may answer with the corner's outer model: bp > 0 and the data's corner
-/// the loaded edge zone ((O1)).
+/// on the friction bound as the loaded edge zone ((O1)): the loaded state's edge zone, or
+/// through [`Mirror`] an unloading state's trailing zone (the reloading).
 fn outer_applies<D: Start + ?Sized>(m: &D) -> bool {
     m.coupling().bp > 0.0 && m.loaded_edge_at_corner()
 }
@@ -715,7 +743,8 @@ pub(crate) struct Unloading<D: Start + ?Sized = Monotonic> {
 /// [`W1_MIN`] (as the loading's scan of w1).
 ///
 /// Where that answer is refused or does not converge and the data's corner is the loaded
-/// edge zone with bp > 0 (the corner structure of docs/theory_tangential.md section 19), the
+/// edge zone with bp > 0, or (mirrored) an unloading state's trailing zone (the reloading,
+/// section 23) (the corner structure of docs/theory_tangential.md section 19), the
 /// answer is the corner's outer model instead ([`outer_cold`], section 21), with its own
 /// admissibility check and estimates; if that fails too, the three-zone refusal is returned
 /// (its status) with the outer model's reason appended (a ToleranceNotMet of the outer
@@ -741,7 +770,7 @@ pub(crate) fn unload<D: Start + ?Sized>(
 }
 
 /// The three-zone answer of [`unload`] (its grid start, scan of w2, ladder and check).
-fn three_zone<D: Start + ?Sized>(
+pub(crate) fn three_zone<D: Start + ?Sized>(
     m: &Arc<D>,
     qp: f64,
     tol: f64,
@@ -787,8 +816,8 @@ fn check_load<D: Start + ?Sized>(m: &D, qp: f64) -> Result<()> {
     if m.corner_layer() {
         return Err(Error::InvalidArgument(
             "exact unloading: the data is an answer of the corner's outer model (a layer \
-             stuck at -1 with the bonded field there, docs/theory_tangential.md section 21), \
-             which no branch takes as data yet"
+             stuck at a contact end with the bonded field there, docs/theory_tangential.md \
+             sections 21 and 23), which no branch takes as data yet"
                 .into(),
         ));
     }
