@@ -939,6 +939,7 @@ fn spectral_from(
     };
     let tabulated = if table {
         crate::stick_edge_table::lookup(r.bp, r.mu)
+            .filter(|&(lc, _)| known_edge_serves_tractions(r.bp, StickEdge::from_logit(lc)))
     } else {
         None
     };
@@ -964,6 +965,34 @@ fn spectral_from(
         regime: Regime::Spectral(Box::new(s)),
     })
 }
+
+/// Below b* = [`KNOWN_EDGE_B`] the tabulated stick edge starts the tractions' solves (the
+/// spectral solver's [`crate::spectral::from_edge`], the panels' [`panels_at_table_edge`])
+/// only where c and 1 - c are both at least [`KNOWN_EDGE_MIN`]: the range of the table's
+/// first strips there, where both starts were checked against the panels over the 8 x 28
+/// grid of `tests::spectral_agrees_with_the_panels_below_the_table_edge_on_a_grid`. The
+/// strips added since (the thin slip zones and the small stick zones, for c alone) reach
+/// further, and at b* = 0.2, mu~ = 7.92 (1 - c = 3.0e-9) of that grid the known edge's level 2
+/// gave tractions 1.02e-8 off the panels' (to 1e-10) with an estimate of 4.9e-9, where the
+/// start from the guessed edge answers at level 3 within 2.0e-10 (estimate 4.9e-10).
+/// Elsewhere below b* = 0.25 the guessed edge starts them, as before those strips. Above
+/// b* = [`KNOWN_EDGE_B_MAX`] (the strips towards the auxetic limit, for c alone) the panels'
+/// own root search and the auxetic limit answer the tractions, as before those strips.
+fn known_edge_serves_tractions(b: f64, edge: StickEdge) -> bool {
+    b <= KNOWN_EDGE_B_MAX && (b >= KNOWN_EDGE_B || edge.c.min(edge.one_minus_c) >= KNOWN_EDGE_MIN)
+}
+
+/// See [`known_edge_serves_tractions`]: the table's largest b* before its strips towards the
+/// auxetic limit.
+const KNOWN_EDGE_B_MAX: f64 = 0.99;
+
+/// See [`known_edge_serves_tractions`]: the table's b* above which every strip starts at the
+/// full-slip law's c = 1e-11.
+const KNOWN_EDGE_B: f64 = 0.25;
+
+/// See [`known_edge_serves_tractions`]: c at the foot of the first strips below b* = 0.25
+/// (zeta = 0.75), 1.3e-5, and the thinnest slip zone at their nodes, 1.3e-5.
+const KNOWN_EDGE_MIN: f64 = 1.3e-5;
 
 /// Where the near-bonded law ([`near_bonded`]) covers b* and puts 1 - c below this, the
 /// spectral solver outside the table starts from the law's stick edge, elsewhere from
@@ -1070,6 +1099,9 @@ fn panels_at_table_edge(k: &Coupling, tol: f64, traction_tol: f64) -> Option<Cou
         return None;
     }
     let (edge, error) = table_edge(k).filter(|&(_, error)| error <= tol)?;
+    if !known_edge_serves_tractions(k.reduced().0.bp, edge) {
+        return None;
+    }
     panels_at_edge(k, edge, error, traction_tol, Sensitivity::AtFirstOrder)
         .filter(|s| s.traction_error <= traction_tol)
 }
