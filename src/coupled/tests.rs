@@ -1048,9 +1048,10 @@ fn table_below_agrees_with_the_spectral_solver_from_spences_guess() {
 
 /// The thin slip zones below b* = 0.25 (1 - c = 7.5e-5, 1.6e-4, and 1.2e-7 and 3.8e-8, which
 /// the bonded columns serve), tabulated since the table's thin strips: COUPLED's spectral
-/// answer from the tabulated stick edge and the spectral solver from the guessed one
-/// ([`crate::spectral::from_guess`], which made the strips' nodes) both agree with the
-/// panels: c and the tractions within the sum of both estimates.
+/// answer (from the tabulated stick edge at the first two, from the guessed one at the
+/// thinner two, [`super::known_edge_serves_tractions`]) and the spectral solver from the
+/// guessed one ([`crate::spectral::from_guess`], which made the strips' nodes) both agree
+/// with the panels: c and the tractions within the sum of both estimates.
 #[test]
 fn spectral_agrees_with_the_panels_in_the_thin_strips() {
     for (b, mu) in [
