@@ -161,8 +161,8 @@ fn g_top(b: f64) -> f64 {
     coordinates(b, (std::f64::consts::PI * 0.0025).tan().recip() / b).1
 }
 
-/// The documented range is covered: b* from 0.25 to 0.99, from the full-slip law's c = 1e-11
-/// up to mu~ = 4e6 (the large-friction extrapolation's last friction); below b* = 0.25 from
+/// The documented range is covered: b* from 0.25 to 0.9999, from the full-slip law's
+/// c = 1e-11 up to mu~ = 4e6 (the large-friction extrapolation's last friction); below b* = 0.25 from
 /// the full-slip law's c = 1e-11 up to the tops of [`THIN`], and nothing above them there
 /// (the near-bonded law answers c alone above the fixed tops, the panels at large friction
 /// above g = 0.0025).
@@ -170,6 +170,14 @@ fn g_top(b: f64) -> f64 {
 fn covers_the_documented_range() {
     for i in 0..=40 {
         let b = 0.25 + (0.99 - 0.25) * i as f64 / 40.0;
+        // and on towards the auxetic limit, b* = 0.99 .. 0.9999 (equal steps of beta)
+        let aux =
+            (0.99f64.atanh() + (0.9999f64.atanh() - 0.99f64.atanh()) * i as f64 / 40.0).tanh();
+        let lower = coupling_at(aux.atanh(), 0.0).1;
+        for j in 0..=40 {
+            let mu = lower * (4e6 / lower).powf(j as f64 / 40.0);
+            assert!(lookup(aux, mu).is_some(), "b* {aux} mu~ {mu}");
+        }
         let lower = coupling_at(b.atanh(), 0.0).1;
         for j in 0..=40 {
             let mu = lower * (4e6 / lower).powf(j as f64 / 40.0);
@@ -195,8 +203,10 @@ fn covers_the_documented_range() {
             }
         }
     }
-    let (b, mu) = coupling_at(0.019f64.atanh(), 2.0);
-    assert!(lookup(b, mu).is_none(), "b* {b} mu~ {mu}: tabulated");
+    for b in [0.019f64, 0.99991] {
+        let (b, mu) = coupling_at(b.atanh(), 2.0);
+        assert!(lookup(b, mu).is_none(), "b* {b} mu~ {mu}: tabulated");
+    }
 }
 
 /// A random point in every `step`-th [`thin`] patch against the panels' root search to a

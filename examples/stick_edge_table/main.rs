@@ -5,7 +5,7 @@
 //! Run: `cargo run --release --example stick_edge_table` (one command; it prints its runtime,
 //! the number of patches and COUPLED solves, and the largest bound).
 //!
-//! Covered: b* from [`B_HIGH`] to 0.99, mu~ from the table's lower edge (the full-slip law's
+//! Covered: b* from [`B_HIGH`] to 0.99 and on to [`B_AUXETIC`], mu~ from the table's lower edge (the full-slip law's
 //! c = 1e-11) up to at least [`MU_HI`]; b* from [`B_FROM`] to B_HIGH, zeta from 0 up to the
 //! tops of [`BELOW`] and on into the thin slip zones ([`THIN`]). Each patch starts at
 //! `ROWS` x `COLS` Chebyshev points;
@@ -353,8 +353,32 @@ fn all_strips() -> Vec<([f64; 2], Vec<f64>, Solver)> {
             Solver::Panels,
         )
     }));
+    // towards the auxetic limit: AUXETIC_STRIPS equal steps of beta from B_TO to B_AUXETIC,
+    // cut as the strips up to MU_HI
+    let (from, to) = (B_TO.atanh(), B_AUXETIC.atanh());
+    out.extend((0..AUXETIC_STRIPS).map(|i| {
+        let step = (to - from) / AUXETIC_STRIPS as f64;
+        let beta = [from + step * i as f64, from + step * (i + 1) as f64];
+        let top = coordinates(beta[0].tanh(), MU_HI).1;
+        (
+            beta,
+            vec![0.0, 2.0, 4.0, 6.0, 9.0, 13.0, top],
+            Solver::Panels,
+        )
+    }));
     out
 }
+
+/// Largest b* covered towards the auxetic limit (nu -> -1), from [`B_TO`] on in
+/// [`AUXETIC_STRIPS`] strips. The panels' node solves there (to 4e-12 min(c, 1 - c), one
+/// run): 46-50 ms at b* = 0.995 (c = 0.014 .. 0.025, zeta = 3 .. 15), 0.5 s at zeta = 0.5
+/// (c = 1.1e-7); 0.13-0.67 s at b* = 0.9999 (c = 2.8e-4 .. 4.9e-4), 1.2 s at zeta = 0.5
+/// (c = 1.2e-8). c falls like (1 - b*)^(1/k0) there (`coupled::auxetic`), linear in beta in
+/// the log, so lc stays smooth in these coordinates.
+const B_AUXETIC: f64 = 0.9999;
+
+/// Strips between [`B_TO`] and [`B_AUXETIC`] (beta = 2.65 .. 4.95).
+const AUXETIC_STRIPS: usize = 2;
 
 /// A patch as a line of the generated source.
 fn patch_source(p: &Built) -> String {
@@ -410,8 +434,8 @@ fn main() -> std::io::Result<()> {
          use super::Patch;\n\n",
     );
     src += &format!(
-        "/// {} patches: over b* = {B_HIGH} .. {B_TO} from the full-slip law's c = {C_LO:e} up to \
-         mu~ = {MU_HI:e} at least; over b* = {B_FROM} .. {B_HIGH} from zeta = 0 up to zeta = {} \
+        "/// {} patches: over b* = {B_HIGH} .. {B_TO} and on to {B_AUXETIC} from the full-slip \
+         law's c = {C_LO:e} up to mu~ = {MU_HI:e} at least; over b* = {B_FROM} .. {B_HIGH} from zeta = 0 up to zeta = {} \
          (the thin slip zones), and on to g = {G_TOP} from b* = {} on.\n\
          pub(super) const PATCHES: &[Patch] = &[\n",
         out.len(),

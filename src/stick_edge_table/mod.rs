@@ -10,7 +10,8 @@
 //!   c ~ 4 (1 - b*^2)^(pi / (2 b* mu~)) (`coupled::full_slip`) gives c = [`C_LO`].
 //!   Below zeta = 0 the stick zone is below C_LO (the full-slip regime answers c there).
 //!
-//! Covered: b* = 0.25 .. 0.99 from zeta = 0 up to mu~ = 4e6 at least; below, b* = 0.02 .. 0.25
+//! Covered: b* = 0.25 .. 0.9999 (towards the auxetic limit nu -> -1; beta = 0.26 .. 4.95)
+//! from zeta = 0 up to mu~ = 4e6 at least; below, b* = 0.02 .. 0.25
 //! from zeta = 0 up to the thin slip zones' tops (the generator's `THIN`): zeta = 5.05 .. 6.6
 //! for b* = 0.02 .. 0.16, where 1 - c has fallen to about 1e-11 and the near-bonded law
 //! answers c alone above, and from b* = 0.16 on up to the friction at which the edge
