@@ -868,7 +868,7 @@ fn spectral_agrees_with_the_panels() {
 #[test]
 #[ignore = "slow tier: 600 points, each solved by both solvers"]
 fn spectral_agrees_with_the_panels_on_a_grid() {
-    let ([lo_b, hi_b], [lo_z, hi_z]) = crate::stick_edge_table::extent();
+    let ([lo_b, hi_b], [lo_z, hi_z]) = crate::spectral::served_extent();
     let grid = 53;
     let (mut spectral_ms, mut panels_ms) = (Vec::new(), Vec::new());
     let mut unanswered = 0;

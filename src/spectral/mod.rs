@@ -260,6 +260,15 @@ pub(crate) fn serves_at(b: f64, mu: f64, lc: f64) -> bool {
     serves(Constants { b, mu, g }, lc)
 }
 
+/// The stick-edge table's extent in its coordinates (beta, zeta) up to b* = [`B_MAX`]: the
+/// rectangle the tests' and measurements' grids of the tabulated plane span (the table's
+/// strips towards the auxetic limit, for c alone, lie beyond what the bases serve).
+#[cfg(test)]
+pub(crate) fn served_extent() -> ([f64; 2], [f64; 2]) {
+    let ([lo_b, hi_b], zeta) = crate::stick_edge_table::extent();
+    ([lo_b, hi_b.min(B_MAX.atanh())], zeta)
+}
+
 /// Whether [`from_guess`] serves the reduced coupling (b*, mu~) near the stick edge lc: as
 /// [`serves_at`], and c >= [`GUESS_C_MIN`].
 #[cfg(test)]

@@ -100,7 +100,7 @@ fn residuals_off_the_collocation_points() {
 /// over the bound plus the estimate); `grid` points per coordinate over the patches' extent.
 fn sweep(grid: usize) -> (usize, usize, f64) {
     // the patches' extent; its points outside every patch are left out (lookup is None)
-    let ([lo_b, hi_b], [lo_z, hi_z]) = crate::stick_edge_table::extent();
+    let ([lo_b, hi_b], [lo_z, hi_z]) = crate::spectral::served_extent();
     let (mut answered, mut tried, mut worst) = (0, 0, 0.0f64);
     for i in 0..grid {
         for j in 0..grid {
@@ -180,7 +180,7 @@ fn newton_ladder_moves_to_the_root() {
 /// stick zones served, measured as [`First::measured`] measures them.
 #[test]
 fn sensitivity_bounds_hold() {
-    let ([lo_b, hi_b], [lo_z, hi_z]) = crate::stick_edge_table::extent();
+    let ([lo_b, hi_b], [lo_z, hi_z]) = crate::spectral::served_extent();
     let grid = 37;
     let mut scenes: Vec<(f64, f64)> = (0..grid * grid)
         .map(|n| {
@@ -254,7 +254,7 @@ fn sensitivity_bounds_hold() {
 #[test]
 #[ignore = "measurement"]
 fn measure_rate_per_c_by_b() {
-    let ([lo_b, hi_b], [lo_z, hi_z]) = crate::stick_edge_table::extent();
+    let ([lo_b, hi_b], [lo_z, hi_z]) = crate::spectral::served_extent();
     let grid: usize = std::env::var("ORTHOSLIP_GRID").map_or(161, |v| v.parse().unwrap());
     let b_edges = [0.1, 0.2, 0.3, 0.4, 0.5, 0.6, 0.7, 0.8, 0.9, 0.95, 1.0];
     let c_edges = [1e-4, 1e-3, 0.01, 0.03, 0.1, 0.2, 0.3, 0.5, 1.0];
