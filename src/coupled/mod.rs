@@ -968,18 +968,21 @@ fn spectral_from(
 
 /// Below b* = [`KNOWN_EDGE_B`] the tabulated stick edge starts the tractions' solves (the
 /// spectral solver's [`crate::spectral::from_edge`], the panels' [`panels_at_table_edge`])
-/// only where c and 1 - c are both at least [`KNOWN_EDGE_MIN`]: the range of the table's
-/// first strips there, where both starts were checked against the panels over the 8 x 28
-/// grid of `tests::spectral_agrees_with_the_panels_below_the_table_edge_on_a_grid`. The
-/// strips added since (the thin slip zones and the small stick zones, for c alone) reach
-/// further, and at b* = 0.2, mu~ = 7.92 (1 - c = 3.0e-9) of that grid the known edge's level 2
-/// gave tractions 1.02e-8 off the panels' (to 1e-10) with an estimate of 4.9e-9, where the
-/// start from the guessed edge answers at level 3 within 2.0e-10 (estimate 4.9e-10).
-/// Elsewhere below b* = 0.25 the guessed edge starts them, as before those strips. Above
-/// b* = [`KNOWN_EDGE_B_MAX`] (the strips towards the auxetic limit, for c alone) the panels'
-/// own root search and the auxetic limit answer the tractions, as before those strips.
+/// only where 1 - c is at least [`KNOWN_EDGE_MIN`], the thinnest slip zone at the nodes of
+/// the table's first strips there, where both starts were checked against the panels over
+/// the 8 x 28 grid of `tests::spectral_agrees_with_the_panels_below_the_table_edge_on_a_grid`.
+/// The thin slip zones' strips added since (for c alone) reach further, and at b* = 0.2,
+/// mu~ = 7.92 (1 - c = 3.0e-9) of that grid the known edge's level 2 gave tractions 1.02e-8
+/// off the panels' (to 1e-10) with an estimate of 4.9e-9, where the start from the guessed
+/// edge answers at level 3 within 2.0e-10 (estimate 4.9e-10); there the guessed edge starts
+/// them, as before those strips. The small stick zones' strips (c = 1e-11 .. 1.3e-5, which
+/// the guessed start does not serve) take the known edge: the 10 points of them on the
+/// 53 x 53 grid of `tests::spectral_agrees_with_the_panels_on_a_grid` agree with the panels
+/// (1114 of 1114 served points answered there). Above b* = [`KNOWN_EDGE_B_MAX`] (the strips
+/// towards the auxetic limit, for c alone) the panels' own root search and the auxetic limit
+/// answer the tractions, as before those strips.
 fn known_edge_serves_tractions(b: f64, edge: StickEdge) -> bool {
-    b <= KNOWN_EDGE_B_MAX && (b >= KNOWN_EDGE_B || edge.c.min(edge.one_minus_c) >= KNOWN_EDGE_MIN)
+    b <= KNOWN_EDGE_B_MAX && (b >= KNOWN_EDGE_B || edge.one_minus_c >= KNOWN_EDGE_MIN)
 }
 
 /// See [`known_edge_serves_tractions`]: the table's largest b* before its strips towards the
@@ -990,8 +993,8 @@ const KNOWN_EDGE_B_MAX: f64 = 0.99;
 /// full-slip law's c = 1e-11.
 const KNOWN_EDGE_B: f64 = 0.25;
 
-/// See [`known_edge_serves_tractions`]: c at the foot of the first strips below b* = 0.25
-/// (zeta = 0.75), 1.3e-5, and the thinnest slip zone at their nodes, 1.3e-5.
+/// See [`known_edge_serves_tractions`]: the thinnest slip zone at the nodes of the first
+/// strips below b* = 0.25.
 const KNOWN_EDGE_MIN: f64 = 1.3e-5;
 
 /// Where the near-bonded law ([`near_bonded`]) covers b* and puts 1 - c below this, the
