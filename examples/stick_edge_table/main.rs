@@ -93,9 +93,14 @@ enum Solver {
     Spectral,
 }
 
-/// COUPLED's stick edge at table coordinates to |dc| <= `rel` min(c, 1 - c) (relative in
-/// lc), or where `rel` is None to 1e-8 (the guess that sets the patch's node rule).
-fn solve_node(beta: f64, zeta: f64, solver: Solver, rel: Option<f64>) -> Node {
+/// COUPLED's solution at table coordinates with c to `tol` (up to 100 times that where
+/// `solver` misses it), or why it failed.
+fn solve_at(
+    beta: f64,
+    zeta: f64,
+    solver: Solver,
+    tol: f64,
+) -> Result<orthoslip::coupled::CoupledSolution, String> {
     let (b, mu) = coupling_at(beta, zeta);
     let k = Coupling { bp: b, bq: b, mu };
     let at = |tol: f64| -> orthoslip::Result<orthoslip::coupled::CoupledSolution> {
@@ -106,25 +111,22 @@ fn solve_node(beta: f64, zeta: f64, solver: Solver, rel: Option<f64>) -> Node {
         }
         coupled::solve(&k, tol)
     };
-    let done = |s: orthoslip::coupled::CoupledSolution| {
-        let e = s.edge();
-        let lc = e.c.ln() - e.one_minus_c.ln();
-        (lc, e.c * e.one_minus_c, s.numerical_error())
-    };
-    let guess = at(1e-8).map_err(|e| format!("b* {b} mu~ {mu}: {e}"))?;
-    let Some(rel) = rel else {
-        return Ok(done(guess));
-    };
-    let e = guess.edge();
-    let scale = e.c.min(e.one_minus_c);
-    let mut tol = (scale * rel).max(1e-300);
+    let mut t = tol.max(1e-300);
     loop {
-        match at(tol) {
-            Ok(s) => return Ok(done(s)),
-            Err(_) if tol < scale * rel * 1e2 => tol *= 10.0,
-            Err(err) => return Err(format!("b* {b} mu~ {mu} tol {tol:e}: {err}")),
+        match at(t) {
+            Ok(s) => return Ok(s),
+            Err(_) if t < tol * 1e2 => t *= 10.0,
+            Err(err) => return Err(format!("b* {b} mu~ {mu} tol {t:e}: {err}")),
         }
     }
+}
+
+/// The stick edges to 1e-8 at the points (the guesses that set a patch's node rule), on the
+/// available threads.
+fn guesses(points: &[(f64, f64)], solver: Solver) -> Vec<Result<StickEdge, String>> {
+    support::parallel::map(points, |&(beta, zeta)| {
+        solve_at(beta, zeta, solver, 1e-8).map(|s| s.edge())
+    })
 }
 
 /// The node rule of a patch whose largest c (1 - c) (at the guesses) is `largest`: relative
@@ -136,9 +138,25 @@ fn node_rel(largest: f64) -> f64 {
     NODE_REL / largest.max(1e-300)
 }
 
-/// Solves all points on the available threads.
-fn solve_all(points: &[(f64, f64)], solver: Solver, rel: Option<f64>) -> Vec<Node> {
-    support::parallel::map(points, |&(beta, zeta)| solve_node(beta, zeta, solver, rel))
+/// Each point to |dc| <= `rel` min(c, 1 - c) at its guess (relative in lc), on the available
+/// threads.
+fn solve_all(
+    points: &[(f64, f64)],
+    guesses: &[Result<StickEdge, String>],
+    solver: Solver,
+    rel: f64,
+) -> Vec<Node> {
+    let jobs: Vec<_> = points.iter().zip(guesses).collect();
+    support::parallel::map(&jobs, |&(&(beta, zeta), guess)| {
+        let e = guess.as_ref().map_err(|e| e.clone())?;
+        let s = solve_at(beta, zeta, solver, e.c.min(e.one_minus_c) * rel)?;
+        let e = s.edge();
+        Ok((
+            e.c.ln() - e.one_minus_c.ln(),
+            e.c * e.one_minus_c,
+            s.numerical_error(),
+        ))
+    })
 }
 
 struct Built {
@@ -160,12 +178,13 @@ fn build(
 ) -> usize {
     let started = Instant::now();
     let points = nodes(beta, zeta, ROWS, COLS);
-    let largest = solve_all(&points, solver, None)
+    let guessed = guesses(&points, solver);
+    let largest = guessed
         .iter()
-        .map(|r| r.as_ref().map_or(0.25, |n| n.1))
+        .map(|r| r.as_ref().map_or(0.25, |e| e.c * e.one_minus_c))
         .fold(0.0, f64::max);
     let rel = node_rel(largest);
-    let solved = solve_all(&points, solver, Some(rel));
+    let solved = solve_all(&points, &guessed, solver, rel);
     let mut values = Vec::with_capacity(points.len());
     let (mut scale, mut node_tol) = (0.0f64, 0.0f64);
     let mut thinnest = f64::INFINITY;
@@ -227,7 +246,8 @@ fn build(
         })
         .collect();
     let mut worst = 0.0f64;
-    for (p, r) in checks.iter().zip(solve_all(&checks, solver, Some(rel))) {
+    let checked = solve_all(&checks, &guesses(&checks, solver), solver, rel);
+    for (p, r) in checks.iter().zip(checked) {
         let (lc, cw, tol) = r.unwrap_or_else(|e| panic!("check failed: {e}"));
         let v = evaluate(&coef, (ROWS, COLS), (beta, zeta), *p);
         worst = worst.max(StickEdge::from_logit(v).distance(StickEdge::from_logit(lc)));
