@@ -5,7 +5,7 @@
 //! Run: `cargo run --release --example stick_edge_table` (one command; it prints its runtime,
 //! the number of patches and COUPLED solves, and the largest bound).
 //!
-//! Covered: b* from [`B_HIGH`] to 0.99 and on to [`B_AUXETIC`], mu~ from the table's lower edge (the full-slip law's
+//! Covered: b* from [`B_HIGH`] to 0.99 and on to [`B_AUXETIC`] and [`B_EXTREME`], mu~ from the table's lower edge (the full-slip law's
 //! c = 1e-11) up to at least [`MU_HI`]; b* from [`B_FROM`] to B_HIGH, zeta from 0 up to the
 //! tops of [`BELOW`] and on into the thin slip zones ([`THIN`]). Each patch starts at
 //! `ROWS` x `COLS` Chebyshev points;
@@ -374,18 +374,23 @@ fn all_strips() -> Vec<([f64; 2], Vec<f64>, Solver)> {
         )
     }));
     // towards the auxetic limit: AUXETIC_STRIPS equal steps of beta from B_TO to B_AUXETIC,
-    // cut as the strips up to MU_HI
+    // then one on to B_EXTREME, cut as the strips up to MU_HI
     let (from, to) = (B_TO.atanh(), B_AUXETIC.atanh());
-    out.extend((0..AUXETIC_STRIPS).map(|i| {
-        let step = (to - from) / AUXETIC_STRIPS as f64;
-        let beta = [from + step * i as f64, from + step * (i + 1) as f64];
-        let top = coordinates(beta[0].tanh(), MU_HI).1;
-        (
-            beta,
-            vec![0.0, 2.0, 4.0, 6.0, 9.0, 13.0, top],
-            Solver::Panels,
-        )
-    }));
+    let step = (to - from) / AUXETIC_STRIPS as f64;
+    let edge = |i: usize| from + step * i as f64;
+    let auxetic = (0..AUXETIC_STRIPS).map(|i| [edge(i), edge(i + 1)]);
+    out.extend(
+        auxetic
+            .chain(std::iter::once([edge(AUXETIC_STRIPS), B_EXTREME.atanh()]))
+            .map(|beta| {
+                let top = coordinates(beta[0].tanh(), MU_HI).1;
+                (
+                    beta,
+                    vec![0.0, 2.0, 4.0, 6.0, 9.0, 13.0, top],
+                    Solver::Panels,
+                )
+            }),
+    );
     out
 }
 
@@ -399,6 +404,13 @@ const B_AUXETIC: f64 = 0.9999;
 
 /// Strips between [`B_TO`] and [`B_AUXETIC`] (beta = 2.65 .. 4.95).
 const AUXETIC_STRIPS: usize = 2;
+
+/// Largest b* covered: one strip more from [`B_AUXETIC`] up to the lowest node of the
+/// auxetic extrapolation (`coupled::auxetic`, s = 1 - b* = 1e-5), whose four nodes
+/// (s = 1e-5 .. 8e-5) the table then gives for c alone (`--strip 24`: 6 patches, none
+/// halved, 996 panel solves, 16 min on 2 cores shared with a test run, 72-208 s a patch;
+/// largest bound 2.4e-12, largest error at the checks 5.4e-14).
+const B_EXTREME: f64 = 0.99999;
 
 /// A patch as a line of the generated source.
 fn patch_source(p: &Built) -> String {
@@ -454,7 +466,7 @@ fn main() -> std::io::Result<()> {
          use super::Patch;\n\n",
     );
     src += &format!(
-        "/// {} patches: over b* = {B_HIGH} .. {B_TO} and on to {B_AUXETIC} from the full-slip \
+        "/// {} patches: over b* = {B_HIGH} .. {B_TO} and on to {B_EXTREME} from the full-slip \
          law's c = {C_LO:e} up to mu~ = {MU_HI:e} at least; over b* = {B_FROM} .. {B_HIGH} from zeta = 0 up to zeta = {} \
          (the thin slip zones), and on to g = {G_TOP} from b* = {} on.\n\
          pub(super) const PATCHES: &[Patch] = &[\n",

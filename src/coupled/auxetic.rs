@@ -75,37 +75,64 @@ fn exponent(r: &Coupling) -> f64 {
     1.0 / (1.0 - 2.0 * r.edge_exponent())
 }
 
-/// The stick edge of the reduced coupling `r` ([`applies`]) and its error, with the nodes'
-/// c solved to their share of `tol` and to [`node_relative`]`(traction_tol)`.
-fn extrapolated_edge(r: &Coupling, tol: f64, traction_tol: f64) -> Result<(StickEdge, f64)> {
+/// The nodes' reduced couplings: b* = 1 - s at s = S_AUX, 2 S_AUX, 4 S_AUX, 8 S_AUX, the
+/// friction of `r`.
+pub(crate) fn nodes(r: &Coupling) -> [Coupling; 4] {
+    node_b().map(|b| Coupling { bp: b, bq: b, ..*r })
+}
+
+/// The Lagrange weights at s of the cubic through the nodes and of the quadratic through the
+/// upper three (0 at the lowest).
+fn weights(s: f64) -> ([f64; 4], [f64; 4]) {
+    let ys = node_b().map(|b| 1.0 - b);
+    (
+        lagrange(s, ys.map(Some)),
+        lagrange(s, [None, Some(ys[1]), Some(ys[2]), Some(ys[3])]),
+    )
+}
+
+/// The stick edge of the reduced coupling `r` ([`applies`]) and its error from the nodes'
+/// stick zones `c` ([`nodes`]) and their errors: K = c / s^(1/k0) at the nodes, the cubic
+/// through them at s = 1 - b*, times s^(1/k0); the error is the nodes' errors carried over
+/// plus the cubic's distance from the quadratic through the upper three.
+pub(crate) fn extrapolate(r: &Coupling, c: [f64; 4], c_error: [f64; 4]) -> (StickEdge, f64) {
     let s = 1.0 - r.bp;
     let scale = s.powf(exponent(r));
-    let nodes = node_b().map(|b| Coupling { bp: b, bq: b, ..*r });
-    let ys = nodes.map(|n| 1.0 - n.bp);
-    let cubic = lagrange(s, ys.map(Some));
-    let quad = lagrange(s, [None, Some(ys[1]), Some(ys[2]), Some(ys[3])]);
+    let (cubic, quad) = weights(s);
+    let node_scale = nodes(r).map(|n| (1.0 - n.bp).powf(exponent(&n)));
+    let k: [f64; 4] = std::array::from_fn(|i| c[i] / node_scale[i]);
+    let k_error: [f64; 4] = std::array::from_fn(|i| c_error[i] / node_scale[i]);
+    let dot = |w: [f64; 4], v: [f64; 4]| -> f64 { w.iter().zip(v).map(|(a, b)| a * b).sum() };
+    let (k_cubic, k_quad) = (dot(cubic, k), dot(quad, k));
+    let error = (dot(cubic.map(f64::abs), k_error) + (k_cubic - k_quad).abs()) * scale;
+    (StickEdge::from_c(k_cubic * scale), error)
+}
+
+/// The stick edge of the reduced coupling `r` ([`applies`]) and its error ([`extrapolate`]),
+/// with the nodes' c solved by the panels to their share of `tol` and to
+/// [`node_relative`]`(traction_tol)`.
+fn extrapolated_edge(r: &Coupling, tol: f64, traction_tol: f64) -> Result<(StickEdge, f64)> {
+    let scale = (1.0 - r.bp).powf(exponent(r));
+    let (cubic, quad) = weights(1.0 - r.bp);
     // what an error in the nodes' K moves the cubic and its distance from the quadratic by
     let spread: f64 = cubic
         .iter()
         .zip(quad)
         .map(|(a, b)| a.abs() + (a - b).abs())
         .sum();
-    let (mut k, mut k_error) = ([0.0; 4], [0.0; 4]);
-    for (i, node) in nodes.iter().enumerate() {
-        let node_scale = ys[i].powf(exponent(node));
+    let (mut c, mut c_error) = ([0.0; 4], [0.0; 4]);
+    for (i, node) in nodes(r).iter().enumerate() {
+        let node_scale = (1.0 - node.bp).powf(exponent(node));
         // c is below 4 (2 s)^(1/k0) (measured: 0.62 .. 0.74 of it)
         let c_above = 4.0 * 2f64.powf(exponent(node)) * node_scale;
         let node_tol = (SHARE * tol * node_scale / (scale * spread))
             .min(node_relative(traction_tol) * c_above)
             .min(0.5);
         let sol = node_solve(node, node_tol, f64::INFINITY, panel_regimes)?;
-        k[i] = sol.edge.c / node_scale;
-        k_error[i] = sol.error / node_scale;
+        c[i] = sol.edge.c;
+        c_error[i] = sol.error;
     }
-    let dot = |w: [f64; 4], v: [f64; 4]| -> f64 { w.iter().zip(v).map(|(a, b)| a * b).sum() };
-    let (k_cubic, k_quad) = (dot(cubic, k), dot(quad, k));
-    let error = (dot(cubic.map(f64::abs), k_error) + (k_cubic - k_quad).abs()) * scale;
-    Ok((StickEdge::from_c(k_cubic * scale), error))
+    Ok(extrapolate(r, c, c_error))
 }
 
 /// Half-width in lc = ln(c / (1 - c)) of the window around the extrapolated c in which the

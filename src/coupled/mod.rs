@@ -1054,24 +1054,53 @@ fn limit_regime(k: &Coupling, tol: f64, traction_tol: f64) -> Option<CoupledSolu
 
 /// The tabulated stick edge ([`crate::stick_edge_table`]) and its bound (from
 /// [`MU_EXTRAPOLATE`] on, extrapolated in 1/mu~ from the table as [`large_friction`] does from
-/// the panels), where the table covers the coupling.
+/// the panels; in the auxetic limit above the table's last strip, extrapolated in 1 - b* from
+/// the table's c at the auxetic nodes as [`auxetic`] does from the panels), where the table
+/// covers the coupling.
 fn table_edge(k: &Coupling) -> Option<(StickEdge, f64)> {
     let (r, _) = k.reduced();
+    if auxetic::applies(&r) {
+        let (mut c, mut error) = ([0.0; 4], [0.0; 4]);
+        for (i, node) in auxetic::nodes(&r).iter().enumerate() {
+            let (e, bound) = table_edge(node)?;
+            (c[i], error[i]) = (e.c, bound);
+        }
+        return Some(auxetic::extrapolate(&r, c, error));
+    }
     let at = |mu: f64| {
         crate::stick_edge_table::lookup(r.bp, mu)
             .map(|(lc, bound)| (StickEdge::from_logit(lc), bound))
     };
-    if r.mu >= MU_EXTRAPOLATE {
-        let m = large_friction::M;
+    let extrapolated = |m: f64| {
         let [e0, e1, e2] = large_friction::nodes(m).map(at);
         let (e0, e1, e2) = (e0?, e1?, e2?);
         let (edge, error, _) =
             large_friction::extrapolate_edge(r.mu, m, [e0.0, e1.0, e2.0], [e0.1, e1.1, e2.1]);
         Some((edge, error))
+    };
+    let from_top = || {
+        let zeta = crate::stick_edge_table::top(r.bp)?;
+        let top = crate::stick_edge_table::coupling_at(r.bp.atanh(), zeta).1;
+        let g = Coupling { mu: top, ..r }.edge_exponent();
+        (r.mu > top && g <= TOP_NODE_G).then(|| extrapolated(0.25 * top))?
+    };
+    if r.mu >= MU_EXTRAPOLATE {
+        extrapolated(large_friction::M).or_else(from_top)
     } else {
-        at(r.mu)
+        at(r.mu).or_else(from_top)
     }
 }
+
+/// Largest edge exponent g at the top of the table's strip at which [`table_edge`]
+/// extrapolates in 1/mu~ from the top down (nodes at top / 4, top / 2 and the top itself).
+/// The strips of b* = 0.16 .. 0.25 end at g = 0.0025, where the edge is analytic in 1/mu~
+/// ([`large_friction`]): measured with the panels at b* = 0.2, lc = 20.8700297 (mu~ = 500,
+/// the table's top 637), 20.8778522 (1e3), 20.8817410 (2e3), 20.8836819 (4e3), differences
+/// 7.82e-3, 3.89e-3, 1.94e-3 in the ratio 2.01, 2.003 of the leading 1/mu~ term, and c moving
+/// by 1.7e-11 in all (1 - c = 8.63e-10 .. 8.52e-10). The strips below b* = 0.16 end at fixed
+/// zeta where g is 0.2 and more (b* = 0.16, zeta = 6.6: mu~ = 7.2, g = 0.23), far from that
+/// expansion; the near-bonded law answers c alone above them.
+const TOP_NODE_G: f64 = 0.01;
 
 /// c alone: the tabulated stick edge where its bound meets `tol`, with Goodman's tractions
 /// and their model-error bound (+infinity where the model-error table gives none: no

@@ -10,7 +10,7 @@
 //!   c ~ 4 (1 - b*^2)^(pi / (2 b* mu~)) (`coupled::full_slip`) gives c = [`C_LO`].
 //!   Below zeta = 0 the stick zone is below C_LO (the full-slip regime answers c there).
 //!
-//! Covered: b* = 0.25 .. 0.9999 (towards the auxetic limit nu -> -1; beta = 0.26 .. 4.95)
+//! Covered: b* = 0.25 .. 0.99999 (towards the auxetic limit nu -> -1; beta = 0.26 .. 6.10)
 //! from zeta = 0 up to mu~ = 4e6 at least; below, b* = 0.02 .. 0.25
 //! from zeta = 0 up to the thin slip zones' tops (the generator's `THIN`): zeta = 5.05 .. 6.6
 //! for b* = 0.02 .. 0.16, where 1 - c has fallen to about 1e-11 and the near-bonded law
@@ -144,6 +144,17 @@ pub fn evaluate(
         *sum = chebyshev_sum(row, tz);
     }
     chebyshev_sum(&row_sums[..rows], tb)
+}
+
+/// The largest zeta the patches cover at b* (the top of its strip), or None where no patch
+/// covers b*.
+pub fn top(b: f64) -> Option<f64> {
+    let beta = b.atanh();
+    patches()
+        .iter()
+        .filter(|p| p.beta[0] - EDGE_SLACK <= beta && beta <= p.beta[1] + EDGE_SLACK)
+        .map(|p| p.zeta[1])
+        .reduce(f64::max)
 }
 
 /// The table's stick edge at the reduced coupling (b*, mu~): (lc, bound on |c_table - c|),
