@@ -385,3 +385,55 @@ fn thin_large_friction_just_above_the_top() {
         assert!(d <= both && d <= 1e-10, "b* {b} mu~ {mu}: {d:e} ({both:e})");
     }
 }
+
+/// Below the table's smallest b* (0.02) c alone is Goodman's edge corrected by the table's
+/// difference from it, extrapolated in b*^2 (`coupled::weak_coupling`); it agrees with the
+/// panels' root search within the two estimates and within 1e-10, from the small stick
+/// zones to the slip zones of 1e-3.
+#[test]
+fn weak_coupling_from_the_table() {
+    for b in [1e-3, 0.007, 0.019] {
+        for zeta in [0.3, 1.5, 3.0, 4.2] {
+            let (b, mu) = coupling_at(f64::atanh(b), zeta);
+            let k = Coupling { bp: b, bq: b, mu };
+            let table = coupled::solve_to(&k, 1e-10, f64::INFINITY).unwrap();
+            assert_eq!(table.unknowns(), 0, "b* {b} zeta {zeta}: not the table");
+            let panels = coupled::solve(&k, 1e-12).unwrap();
+            let d = table.edge().distance(panels.edge());
+            let both = table.numerical_error() + panels.numerical_error();
+            eprintln!(
+                "b* {b} zeta {zeta}: c {:.6e}, 1 - c {:.3e}, |dc| {d:.1e} (estimates {:.1e} + {:.1e})",
+                table.edge().c,
+                table.edge().one_minus_c,
+                table.numerical_error(),
+                panels.numerical_error()
+            );
+            assert!(
+                d <= both && d <= 1e-10,
+                "b* {b} zeta {zeta}: {d:e} ({both:e})"
+            );
+        }
+    }
+}
+
+/// [`weak_coupling_from_the_table`] in a thin slip zone (b* = 0.01, zeta = 4.8, 1 - c =
+/// 1.5e-9, where the table's nodes are the spectral solver's and h is about -392).
+#[test]
+#[ignore = "slow tier: the panels in a thin slip zone at b* = 0.01, about 4 s"]
+fn weak_coupling_in_a_thin_slip_zone() {
+    let (b, mu) = coupling_at(0.01f64.atanh(), 4.8);
+    let k = Coupling { bp: b, bq: b, mu };
+    let table = coupled::solve_to(&k, 1e-10, f64::INFINITY).unwrap();
+    assert_eq!(table.unknowns(), 0, "not the table");
+    let panels = coupled::solve(&k, 1e-12).unwrap();
+    let d = table.edge().distance(panels.edge());
+    let both = table.numerical_error() + panels.numerical_error();
+    eprintln!(
+        "1 - c {:.6e} and {:.6e}, |dc| {d:.1e} (estimates {:.1e} + {:.1e})",
+        table.edge().one_minus_c,
+        panels.edge().one_minus_c,
+        table.numerical_error(),
+        panels.numerical_error()
+    );
+    assert!(d <= both && d <= 1e-10, "{d:e} ({both:e})");
+}

@@ -71,6 +71,7 @@ mod large_friction;
 mod mesh;
 pub(crate) mod near_bonded;
 mod system;
+mod weak_coupling;
 
 #[cfg(test)]
 pub(crate) mod tests;
@@ -1055,10 +1056,27 @@ fn limit_regime(k: &Coupling, tol: f64, traction_tol: f64) -> Option<CoupledSolu
 /// The tabulated stick edge ([`crate::stick_edge_table`]) and its bound (from
 /// [`MU_EXTRAPOLATE`] on, extrapolated in 1/mu~ from the table as [`large_friction`] does from
 /// the panels; in the auxetic limit above the table's last strip, extrapolated in 1 - b* from
-/// the table's c at the auxetic nodes as [`auxetic`] does from the panels), where the table
-/// covers the coupling.
+/// the table's c at the auxetic nodes as [`auxetic`] does from the panels; below its smallest
+/// b*, Goodman's edge corrected by the table's difference from it, extrapolated in b*^2
+/// ([`weak_coupling`])), where the table covers the coupling.
 fn table_edge(k: &Coupling) -> Option<(StickEdge, f64)> {
     let (r, _) = k.reduced();
+    if weak_coupling::applies(r.bp) {
+        let zeta = crate::stick_edge_table::coordinates(r.bp, r.mu).1;
+        let node = |b: f64| {
+            let mu = crate::stick_edge_table::coupling_at(b.atanh(), zeta).1;
+            let (table, bound) = table_edge(&Coupling { bp: b, bq: b, mu })?;
+            let goodman = crate::goodman::stick_edge(b / mu);
+            Some(weak_coupling::Node {
+                table,
+                bound,
+                goodman,
+            })
+        };
+        let [n0, n1, n2] = weak_coupling::NODE_B.map(node);
+        let goodman = crate::goodman::stick_edge(r.bp / r.mu);
+        return Some(weak_coupling::extrapolate(r.bp, goodman, [n0?, n1?, n2?]));
+    }
     if auxetic::applies(&r) {
         let (mut c, mut error) = ([0.0; 4], [0.0; 4]);
         for (i, node) in auxetic::nodes(&r).iter().enumerate() {
