@@ -981,7 +981,10 @@ fn spectral_from(
 /// 53 x 53 grid of `tests::spectral_agrees_with_the_panels_on_a_grid` agree with the panels
 /// (1114 of 1114 served points answered there). Above b* = [`KNOWN_EDGE_B_MAX`] (the strips
 /// towards the auxetic limit, for c alone) the panels' own root search and the auxetic limit
-/// answer the tractions, as before those strips.
+/// answer the tractions, as before those strips. Below the table's smallest b* the known edge
+/// is the weak-coupling law's ([`weak_coupling`]; at 12 points of b* = 1e-3 .. 0.019,
+/// 1 - c >= 3.6e-5, the panels at it lay within both estimates of the root search's
+/// tractions, `tests/stick_edge_table.rs`).
 fn known_edge_serves_tractions(b: f64, edge: StickEdge) -> bool {
     b <= KNOWN_EDGE_B_MAX && (b >= KNOWN_EDGE_B || edge.one_minus_c >= KNOWN_EDGE_MIN)
 }
