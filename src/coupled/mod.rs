@@ -940,6 +940,11 @@ fn spectral_from(
     };
     let tabulated = if table {
         crate::stick_edge_table::lookup(r.bp, r.mu)
+            .or_else(|| {
+                // below the table's smallest b*, the weak-coupling law's edge
+                let (e, bound) = weak_coupling::applies(r.bp).then(|| table_edge(k))??;
+                Some((e.c.ln() - e.one_minus_c.ln(), bound))
+            })
             .filter(|&(lc, _)| known_edge_serves_tractions(r.bp, StickEdge::from_logit(lc)))
     } else {
         None
