@@ -5,6 +5,7 @@
 //! documented range (a union of rectangles: below b* = 0.25 the strips stop short of the
 //! thin slip zones), and the c-alone path of the public API taking it.
 
+use orthoslip::coupled::CoupledSolution;
 use orthoslip::problem::traction_distance;
 use orthoslip::stick_edge_table::{
     Patch, coordinates, coupling_at, evaluate, lookup, nodes, patches,
@@ -312,6 +313,25 @@ fn c_alone_takes_the_table() {
     }
 }
 
+/// c alone (to 1e-10) at `k` answered from the table without unknowns (a lookup, or an
+/// extrapolation from it), against `reference`'s c within the two estimates and within
+/// 1e-10; the table's answer.
+fn table_agrees(k: &Coupling, reference: &CoupledSolution, label: &str) -> CoupledSolution {
+    let table = coupled::solve_to(k, 1e-10, f64::INFINITY).unwrap();
+    assert_eq!(table.unknowns(), 0, "{label}: not the table");
+    let d = table.edge().distance(reference.edge());
+    let both = table.numerical_error() + reference.numerical_error();
+    eprintln!(
+        "{label}: c {:.6e}, 1 - c {:.6e}, |dc| {d:.1e} (estimates {:.1e} + {:.1e})",
+        table.edge().c,
+        table.edge().one_minus_c,
+        table.numerical_error(),
+        reference.numerical_error()
+    );
+    assert!(d <= both && d <= 1e-10, "{label}: {d:e} ({both:e})");
+    table
+}
+
 /// Above the table's last strip (b* > 0.99999, the auxetic limit) c alone is the auxetic
 /// law through the table's c at its four nodes (s = 1 - b* = 1e-5 .. 8e-5); it agrees with
 /// the same law through the panels' c there, followed by their root search in a window
@@ -327,18 +347,8 @@ fn auxetic_limit_from_the_table() {
                 bq: 1.0 - s,
                 mu,
             };
-            let table = coupled::solve_to(&k, 1e-10, f64::INFINITY).unwrap();
-            assert_eq!(table.unknowns(), 0, "s {s} mu~ {mu}: not the table");
             let panels = coupled::solve(&k, 1e-10).unwrap();
-            let d = table.edge().distance(panels.edge());
-            let both = table.numerical_error() + panels.numerical_error();
-            eprintln!(
-                "s {s:e} mu~ {mu:e}: c {:.6e}, |dc| {d:.1e} (estimates {:.1e} + {:.1e})",
-                table.edge().c,
-                table.numerical_error(),
-                panels.numerical_error()
-            );
-            assert!(d <= both && d <= 1e-10, "s {s} mu~ {mu}: {d:e} ({both:e})");
+            table_agrees(&k, &panels, &format!("s {s:e} mu~ {mu:e}"));
         }
     }
 }
@@ -348,24 +358,12 @@ fn auxetic_limit_from_the_table() {
 /// panels' root search (their own extrapolation in 1/mu~ from mu~ = 1e6 beyond 1e7) within
 /// the two estimates and within 1e-10.
 #[test]
-#[ignore = "slow tier: the panels in thin slip zones at large friction, three points"]
+#[ignore = "slow tier: the panels in thin slip zones at large friction, two points"]
 fn thin_large_friction_from_the_table() {
     for (b, mu) in [(0.2, 1e8), (0.245, 2e3)] {
-        {
-            let k = Coupling { bp: b, bq: b, mu };
-            let table = coupled::solve_to(&k, 1e-10, f64::INFINITY).unwrap();
-            assert_eq!(table.unknowns(), 0, "b* {b} mu~ {mu}: not the table");
-            let panels = coupled::solve(&k, 1e-11).unwrap();
-            let d = table.edge().distance(panels.edge());
-            let both = table.numerical_error() + panels.numerical_error();
-            eprintln!(
-                "b* {b} mu~ {mu:e}: 1 - c {:.6e}, |dc| {d:.1e} (estimates {:.1e} + {:.1e})",
-                table.edge().one_minus_c,
-                table.numerical_error(),
-                panels.numerical_error()
-            );
-            assert!(d <= both && d <= 1e-10, "b* {b} mu~ {mu}: {d:e} ({both:e})");
-        }
+        let k = Coupling { bp: b, bq: b, mu };
+        let panels = coupled::solve(&k, 1e-11).unwrap();
+        table_agrees(&k, &panels, &format!("b* {b} mu~ {mu:e}"));
     }
 }
 
@@ -377,13 +375,8 @@ fn thin_large_friction_just_above_the_top() {
     for (b, mu) in [(0.17, 900.0), (0.2, 750.0), (0.245, 600.0)] {
         let k = Coupling { bp: b, bq: b, mu };
         assert!(lookup(b, mu).is_none());
-        let table = coupled::solve_to(&k, 1e-10, f64::INFINITY).unwrap();
-        assert_eq!(table.unknowns(), 0, "b* {b} mu~ {mu}: not the table");
         let direct = coupled::solve_spectral_untabulated(&k, 1e-12, f64::INFINITY).unwrap();
-        let d = table.edge().distance(direct.edge());
-        let both = table.numerical_error() + direct.numerical_error();
-        eprintln!("b* {b} mu~ {mu}: |dc| {d:.1e} (estimates {both:.1e})");
-        assert!(d <= both && d <= 1e-10, "b* {b} mu~ {mu}: {d:e} ({both:e})");
+        table_agrees(&k, &direct, &format!("b* {b} mu~ {mu}"));
     }
 }
 
@@ -399,22 +392,8 @@ fn weak_coupling_from_the_table() {
         for zeta in [0.3, 1.5, 3.0, 4.2] {
             let (b, mu) = coupling_at(f64::atanh(b), zeta);
             let k = Coupling { bp: b, bq: b, mu };
-            let table = coupled::solve_to(&k, 1e-10, f64::INFINITY).unwrap();
-            assert_eq!(table.unknowns(), 0, "b* {b} zeta {zeta}: not the table");
             let panels = coupled::solve(&k, 1e-12).unwrap();
-            let d = table.edge().distance(panels.edge());
-            let both = table.numerical_error() + panels.numerical_error();
-            eprintln!(
-                "b* {b} zeta {zeta}: c {:.6e}, 1 - c {:.3e}, |dc| {d:.1e} (estimates {:.1e} + {:.1e})",
-                table.edge().c,
-                table.edge().one_minus_c,
-                table.numerical_error(),
-                panels.numerical_error()
-            );
-            assert!(
-                d <= both && d <= 1e-10,
-                "b* {b} zeta {zeta}: {d:e} ({both:e})"
-            );
+            table_agrees(&k, &panels, &format!("b* {b} zeta {zeta}"));
             for ttol in [1e-8, 1e-10] {
                 let with = coupled::solve_to(&k, 1e-10, ttol).unwrap();
                 let dt = traction_distance(&with, &panels);
@@ -438,17 +417,6 @@ fn weak_coupling_from_the_table() {
 fn weak_coupling_in_a_thin_slip_zone() {
     let (b, mu) = coupling_at(0.01f64.atanh(), 4.8);
     let k = Coupling { bp: b, bq: b, mu };
-    let table = coupled::solve_to(&k, 1e-10, f64::INFINITY).unwrap();
-    assert_eq!(table.unknowns(), 0, "not the table");
     let panels = coupled::solve(&k, 1e-12).unwrap();
-    let d = table.edge().distance(panels.edge());
-    let both = table.numerical_error() + panels.numerical_error();
-    eprintln!(
-        "1 - c {:.6e} and {:.6e}, |dc| {d:.1e} (estimates {:.1e} + {:.1e})",
-        table.edge().one_minus_c,
-        panels.edge().one_minus_c,
-        table.numerical_error(),
-        panels.numerical_error()
-    );
-    assert!(d <= both && d <= 1e-10, "{d:e} ({both:e})");
+    table_agrees(&k, &panels, "b* = 0.01, zeta = 4.8");
 }
