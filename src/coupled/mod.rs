@@ -1034,8 +1034,9 @@ fn guessed_edge(k: &Coupling, reduced: &Coupling) -> Option<StickEdge> {
 }
 
 /// The closed-form regimes, where they meet the tolerances: mu = 0 (p = p0, q = 0), bp = 0
-/// (Goodman's closed form is exact), a stick zone below the tolerance ([`full_slip`]) and
-/// slip zones below it ([`near_bonded`]).
+/// (Goodman's closed form is exact), a stick zone below the tolerance ([`full_slip`]), slip
+/// zones below it ([`near_bonded`]) and b* small enough for Goodman's bounds in b*^2
+/// ([`weak_coupling::goodman_bounds`]).
 fn limit_regime(k: &Coupling, tol: f64, traction_tol: f64) -> Option<CoupledSolution> {
     if k.mu == 0.0 {
         return Some(CoupledSolution {
@@ -1058,7 +1059,19 @@ fn limit_regime(k: &Coupling, tol: f64, traction_tol: f64) -> Option<CoupledSolu
         return Some(CoupledSolution::from_profile(fs, Regime::FullSlip));
     }
     let nb = NearBonded::new(k);
-    (nb.covered() && meets(&nb)).then(|| CoupledSolution::from_profile(nb, Regime::NearBonded))
+    if nb.covered() && meets(&nb) {
+        return Some(CoupledSolution::from_profile(nb, Regime::NearBonded));
+    }
+    // b* -> 0: Goodman's solution within its bounds in b*^2
+    let (r, delta) = k.reduced();
+    let (c_bound, traction_bound) = weak_coupling::goodman_bounds(r.bp, delta);
+    if c_bound > tol || traction_bound > traction_tol {
+        return None;
+    }
+    let mut s = CoupledSolution::from_profile(crate::goodman::solve(k).ok()?, Regime::Uncoupled);
+    s.error += c_bound;
+    s.traction_error += traction_bound;
+    (s.error <= tol && s.traction_error <= traction_tol).then_some(s)
 }
 
 /// The tabulated stick edge ([`crate::stick_edge_table`]) and its bound (from

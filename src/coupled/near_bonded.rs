@@ -72,7 +72,8 @@ impl NearBonded {
     pub(crate) fn new(k: &Coupling) -> Self {
         let (r, delta) = k.reduced();
         let (b, eps) = (r.bp, r.bp.atanh() / PI);
-        let phase = r.mu.atan() / eps;
+        // arctan(mu~) / eps, the quotient first (eps underflows to 0 at b* = 5e-324)
+        let phase = r.mu.atan() / r.bp.atanh() * PI;
         NearBonded {
             coupling: *k,
             delta,

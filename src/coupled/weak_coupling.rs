@@ -67,3 +67,75 @@ pub(crate) fn extrapolate(b: f64, goodman: StickEdge, nodes: [Node; 3]) -> (Stic
     let spread = edge.c * edge.one_minus_c * lc_error.exp();
     (edge, spread * lc_error)
 }
+
+/// Bounds on Goodman's error as b* -> 0, in units of b*^2: on |c - c_G| ([`GOODMAN_C`]) and on
+/// the traction distance at delta = 1 ([`GOODMAN_TRACTIONS`]). Measured against COUPLED (c
+/// to 1e-12, tractions to 1e-11) at b* = 1e-4 over zeta = -1 .. 8 (steps of 0.25 from 1.5 to
+/// 4), the largest |c - c_G| / b*^2 was 0.651 (zeta = 2.75, c = 0.64) and the largest
+/// distance / b*^2 0.641 (zeta = 3, c = 0.82); it falls to 0.016 at zeta = -1 (c = 1e-31)
+/// and levels off at 0.550 from zeta = 4 on (the near-bonded field). Both scale as b*^2:
+///
+/// | zeta | distance / b*^2 at b* = 1e-2 | 1e-3 | 1e-4 |
+/// |---|---|---|---|
+/// | 0.5 | 0.07174 | 0.07168 | 0.07167 |
+/// | 2 | 0.3235 | 0.3220 | 0.3219 |
+/// | 4 | 0.5591 | 0.5510 | 0.5502 |
+///
+/// The bounds are twice the largest, rounded up.
+pub(crate) const GOODMAN_C: f64 = 1.4;
+/// See [`GOODMAN_C`].
+pub(crate) const GOODMAN_TRACTIONS: f64 = 1.4;
+
+/// Bounds on Goodman's errors in c and in the tractions (q~ weighed by `delta`) at b* = `b`
+/// ([`GOODMAN_C`], [`GOODMAN_TRACTIONS`]; the distance's q~ part grows at most like delta).
+pub(crate) fn goodman_bounds(b: f64, delta: f64) -> (f64, f64) {
+    let b2 = b * b;
+    (GOODMAN_C * b2, GOODMAN_TRACTIONS * delta.max(1.0) * b2)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::coupled::solve_to;
+    use crate::problem::{Coupling, Profile, traction_distance};
+    use crate::stick_edge_table::coupling_at;
+
+    /// Goodman's c and tractions lie within [`goodman_bounds`] of the panels' root search (c
+    /// to 1e-12, with its traction estimate) at b* = 1e-3 and 1e-4 over the stick zones from 1e-31 to the
+    /// near-bonded field, with at least the measured margin of 2 at the largest; and at
+    /// b* = 1e-300 (b*^2 underflows) and 5e-324 COUPLED answers with Goodman's edge, c = 1/sqrt(2)
+    /// at b* = mu~.
+    #[test]
+    fn goodman_within_its_bounds_as_b_vanishes() {
+        for b in [1e-3, 1e-4] {
+            for zeta in [-1.0, 1.0, 2.75, 3.0, 6.0] {
+                let (b, mu) = coupling_at(f64::atanh(b), zeta);
+                let k = Coupling { bp: b, bq: b, mu };
+                let g = crate::goodman::solve(&k).unwrap();
+                // the panels' own root search (not from this module's edge)
+                let s = crate::coupled::solve(&k, 1e-12).unwrap();
+                let (c_bound, t_bound) = goodman_bounds(b, 1.0);
+                let dc = g.edge().distance(s.edge()) + s.numerical_error();
+                let dt = traction_distance(&g, &s) + s.traction_error();
+                assert!(
+                    dc <= 0.5 * c_bound,
+                    "b* {b} zeta {zeta}: c {dc:e} ({c_bound:e})"
+                );
+                assert!(
+                    dt <= 0.5 * t_bound,
+                    "b* {b} zeta {zeta}: {dt:e} ({t_bound:e})"
+                );
+            }
+        }
+        for b in [1e-300, 5e-324] {
+            let k = Coupling {
+                bp: b,
+                bq: b,
+                mu: b,
+            };
+            let s = solve_to(&k, 1e-10, 1e-10).unwrap();
+            assert!((s.edge().c - std::f64::consts::FRAC_1_SQRT_2).abs() <= 1e-15);
+            assert!(s.numerical_error() <= 1e-14 && s.traction_error() <= 1e-13);
+        }
+    }
+}
