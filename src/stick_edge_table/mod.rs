@@ -85,8 +85,12 @@ pub fn extent() -> ([f64; 2], [f64; 2]) {
 /// L = -ln(1 - b*^2). Below b* = 1e-8, L / b* is b* to rounding (L = b*^2 (1 + b*^2 / 2 +
 /// ...)), taken as such: b*^2 underflows below 1e-154.
 fn mu_lo(b: f64) -> f64 {
-    let l_over_b = if b < 1e-8 { b } else { -(-b * b).ln_1p() / b };
-    std::f64::consts::PI * l_over_b / (2.0 * (4.0 / C_LO).ln())
+    let pi = std::f64::consts::PI;
+    if b < 1e-8 {
+        pi * b / (2.0 * (4.0 / C_LO).ln())
+    } else {
+        pi * -(-b * b).ln_1p() / (2.0 * b * (4.0 / C_LO).ln())
+    }
 }
 
 /// The table's coordinates (beta, zeta) of the reduced coupling (b*, mu~), 0 < b* < 1.
