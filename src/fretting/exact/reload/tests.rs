@@ -1361,3 +1361,54 @@ fn measure_reloading_dissipation() {
         }
     }
 }
+
+/// The cost of the cold reloading to +Q* on the ply (mu = 0.3, Q* = 0.6 mu P, tolerances
+/// (1e-8, 1e-5); docs/theory_tangential.md sections 23-24), `outer_cold`'s march from -Q*
+/// and the ladder at +Q*: the cheap march (each load to relative steps of `MARCH_TOL`, the
+/// chord method's Jacobian carried from load to load and into the ladder) against the
+/// march before it (each load to 1e-8, a fresh Jacobian at every load): alternated runs
+/// on the same data, each timed by the thread's CPU time (/proc/thread-self/schedstat) and
+/// the wall clock, with its solves; the answers' ends and tractions against each other and
+/// against their estimates (asserted: within the sum of the two runs' estimates). About
+/// 4 min in one run.
+#[cfg(feature = "measure")]
+#[test]
+#[ignore = "measurement"]
+fn measure_cold_march_jacobian() {
+    use super::super::unload::outer_cold_with;
+    let cpu = || -> f64 {
+        let s = std::fs::read_to_string("/proc/thread-self/schedstat").unwrap();
+        s.split_whitespace().next().unwrap().parse::<f64>().unwrap() * 1e-9
+    };
+    let (mirror, _, q_star) = mirrored_unloaded_ply();
+    let g = edge_exponent(mirror.coupling());
+    let mut runs: Vec<(bool, Unloading<Mirror>)> = Vec::new();
+    for cheap in [false, true, false, true] {
+        let (c0, t0) = (cpu(), std::time::Instant::now());
+        let u = outer_cold_with(&mirror, -q_star, 1e-8, 1e-5, cheap).unwrap();
+        let (c1, t1) = (cpu(), t0.elapsed());
+        let [e2, wa, w2] = [u.level.layer.unwrap(), u.level.wa, u.level.w2.unwrap()];
+        println!(
+            "cheap {cheap}: CPU {:.1} s, wall {:.1} s, {} solves, level {}; 1 + e2 = {e2:.9e}, \
+             1 + a1 = {wa:.9e}, 1 - a2 = {w2:.9e}, estimates {:.1e} (ends), {:.1e} (tractions)",
+            c1 - c0,
+            t1.as_secs_f64(),
+            u.solves,
+            u.levels,
+            u.c_error,
+            u.traction_error
+        );
+        runs.push((cheap, u));
+    }
+    let (fresh, kept) = (&runs[0].1, &runs[1].1);
+    let ends = |u: &Unloading<Mirror>| [u.level.layer.unwrap(), u.level.wa, u.level.w2.unwrap()];
+    let moved: f64 = (0..3).map(|i| (ends(fresh)[i] - ends(kept)[i]).abs()).sum();
+    let dt = distance(g, &fresh.level.state, &kept.level.state);
+    println!(
+        "before against cheap: ends {moved:.2e} (estimates {:.1e} + {:.1e}), tractions {dt:.2e} \
+         (estimates {:.1e} + {:.1e})",
+        fresh.c_error, kept.c_error, fresh.traction_error, kept.traction_error
+    );
+    assert!(moved <= fresh.c_error + kept.c_error);
+    assert!(dt <= fresh.traction_error + kept.traction_error);
+}

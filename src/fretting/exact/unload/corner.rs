@@ -325,7 +325,8 @@ pub(crate) const OUTER_TRACTION_FACTOR: f64 = 4.0;
 /// The outer model at Q/P = `qp` from the ends `start`, by the ladder of levels `first`,
 /// `first` + 1, ... (section 11's, [`super::super::ladder`]) until its estimates, raised by
 /// [`OUTER_END_FACTOR`] and [`OUTER_TRACTION_FACTOR`], are within `tol` (the ends) and
-/// `traction_tol` (the tractions); the Jacobian is kept between levels.
+/// `traction_tol` (the tractions); the chord method's Jacobian `jac` is kept between levels
+/// (given, the first level starts from it: a march's at a nearby load, [`super::outer_cold`]).
 pub(crate) fn outer<D: Start + ?Sized>(
     m: &D,
     qp: f64,
@@ -333,9 +334,9 @@ pub(crate) fn outer<D: Start + ?Sized>(
     traction_tol: f64,
     start: OuterEnds,
     first: usize,
+    jac: &mut Option<[[f64; 3]; 3]>,
 ) -> Result<super::super::Climbed<OuterLevel>> {
     let g = edge_exponent(m.coupling());
-    let mut jac = None;
     let climbed = super::super::ladder(
         g,
         first,
@@ -344,7 +345,7 @@ pub(crate) fn outer<D: Start + ?Sized>(
         0,
         |level, prev: Option<&OuterLevel>| {
             let x0 = prev.map_or(start, |p| p.x);
-            outer_level(m, x0, qp, level, 0.1 * tol, &mut jac)
+            outer_level(m, x0, qp, level, 0.1 * tol, jac)
         },
     )?;
     climbed

@@ -1061,7 +1061,7 @@ fn outer_model_on_the_ply() {
     let w1 = m.stick_set().0;
     let start = [0.08 * w1, 1.05 * w1, 0.9 * w1];
     let t = std::time::Instant::now();
-    let c = corner::outer(&m, qp, 1e-10, 1e-8, start, 3).unwrap();
+    let c = corner::outer(&m, qp, 1e-10, 1e-8, start, 3, &mut None).unwrap();
     let o = &c.level;
     let [e2, wa, w2] = o.x;
     println!(
@@ -1213,7 +1213,7 @@ fn measure_outer_estimates() {
         let t = std::time::Instant::now();
         // the ladder's stopping test with both factors 1: the raw estimates within
         // (1e-10, 1e-8)
-        let c = match corner::outer(&m, qp, 1e-10 * fe, 1e-8 * ft, x, 3) {
+        let c = match corner::outer(&m, qp, 1e-10 * fe, 1e-8 * ft, x, 3, &mut None) {
             Ok(c) => c,
             Err(e) => {
                 println!("Q/Q* = {frac}: {e}");
