@@ -1594,13 +1594,15 @@ fn second_unloading_step_dissipation<D: Start + ?Sized>(
 /// The second unloading on the ply (mu = 0.3, Q* = 0.6 mu P; docs/theory_tangential.md
 /// section 24): the reloaded state at +Q* (to (1e-8, 1e-5)) as data, the outer model with
 /// a far layer marched from +Q* to -Q* at level `ORTHOSLIP_LEVEL` (3 by default) in steps of
-/// 0.1 Q* (the first from the width laws), each from the ends of the two before
-/// extrapolated in their logarithms, the Jacobian carried: the ends, the border constants,
-/// the slips' signs in both zones at 1e-6 .. 0.9 of their widths (each from its nearer
-/// stick end), the far layer's margin; at -Q* int p, int q by quadrature, the residuals
-/// between collocation points, the moment against the first unloaded state's and the
-/// grid's second unloading (N = 200, 400); the dissipation W2 summed by
-/// [`second_unloading_step_dissipation`] over the steps. Prints, asserts nothing.
+/// 0.1 Q*, halved after a failure down to 0.0125 Q* (the first from the width laws); where
+/// the far model finds no root, section 20's outer model on the same data (the far layer
+/// gone); each from the ends of the two before extrapolated in their logarithms, the
+/// Jacobian carried: the ends, the border constants, the slips' signs in both zones at
+/// 1e-6 .. 0.9 of their widths (each from its nearer stick end), the far layer's margin; at
+/// the last load reached int p, int q by quadrature, the residuals between collocation
+/// points, the moment against the first unloaded state's; the grid's second unloading
+/// (N = 200, 400); the dissipation W2 summed by [`second_unloading_step_dissipation`] over
+/// the steps and over every other state. Prints, asserts nothing (about 9-16 min).
 #[cfg(feature = "measure")]
 #[test]
 #[ignore = "measurement"]
@@ -1636,8 +1638,12 @@ fn measure_second_unloading_march() {
         solves: usize,
     }
     let mut states: Vec<(f64, super::super::frame::Solved, [f64; 4])> = Vec::new();
-    for i in 1..=20 {
-        let f = 1.0 - 0.1 * i as f64;
+    // steps of 0.1 Q*, halved after a failure (down to 0.0125 Q*) and doubled back after a
+    // success, as `outer_cold`'s march
+    let mut h: f64 = 0.1;
+    let mut done: f64 = 1.0;
+    while done > -1.0 + 1e-12 {
+        let f = (done - h).max(-1.0);
         let next = f * q_star;
         let guess = before.map_or(x, |(tb, xb)| {
             let rr = (next - tq) / (tq - tb);
@@ -1648,13 +1654,14 @@ fn measure_second_unloading_march() {
             outer_level(&*r, [guess[0], guess[1], guess[2]], next, level, 1e-8, jac3)
                 .map(|o| ([o.x[0], o.x[1], o.x[2], 0.0], o.state, o.step, o.solves))
         };
+        let was_far = far;
         let solved = if far {
             far_level(&*r, guess, next, level, 1e-8, &mut jac)
                 .map(|o| (o.x, o.state, o.step, o.solves))
                 .or_else(|e| {
                     // the far layer gone: the outer model at -1 with the trailing zone
                     // reaching +1
-                    println!("Q/Q* = {f:.1}: {e}; the outer model without the far layer");
+                    println!("Q/Q* = {f:.4}: {e}; the outer model without the far layer");
                     far = false;
                     near(&mut jac3)
                 })
@@ -1664,10 +1671,19 @@ fn measure_second_unloading_march() {
         let (ox, state, step, solves) = match solved {
             Ok(v) => v,
             Err(e) => {
-                println!("Q/Q* = {f:.1}: {e}; {:?}", t.elapsed());
-                break;
+                println!("Q/Q* = {f:.4}: {e}; {:?}", t.elapsed());
+                far = was_far;
+                jac = None;
+                jac3 = None;
+                h *= 0.5;
+                if h < 0.0125 {
+                    break;
+                }
+                continue;
             }
         };
+        done = f;
+        h = (2.0 * h).min(0.1);
         let o = Probe {
             x: ox,
             state,
@@ -1704,7 +1720,7 @@ fn measure_second_unloading_march() {
             None => second_unloading_step_dissipation(&*r, None, o.x, s, o.x),
         };
         println!(
-            "Q/Q* = {f:.1}: 1 + e2 = {e2:.6e} ({:.4} w), 1 + a1 = {wa:.6e} ({:.4} w), \
+            "Q/Q* = {f:.4}: 1 + e2 = {e2:.6e} ({:.4} w), 1 + a1 = {wa:.6e} ({:.4} w), \
              1 - a2 = {w2:.6e} ({:.4} w), 1 - d2 = {wd:.6e} ({:.4} e_r); constants {:.1e} \
              {:.1e} {:.1e} {:.1e}; step {:.1e}; slips forwards {} backwards {}; far layer \
              margin {:.3e} {:.3e} {:.3e} {:.3e}; dW {dw:.4e}, W2 so far {:.6e}; {} solves, {:?}",
