@@ -31,6 +31,11 @@ pub(crate) enum Kind {
     Stick,
     Slip(f64),
     Corner(usize),
+    /// The mirror of [`Kind::Corner`] at x = +1 (x -> -x, q -> -q, docs/theory_tangential.md
+    /// section 5): the state on the bound q = +mu p plus the bonded increment, whose
+    /// powers (1 - x)^(a + j), a = -1/2 - i eps (the conjugate of -1 + x's exponent), each
+    /// add two columns of dp + i dq / delta (section 24).
+    FarCorner(usize),
 }
 
 impl Kind {
@@ -40,6 +45,7 @@ impl Kind {
             Kind::Stick => None,
             Kind::Slip(s) => Some(s),
             Kind::Corner(_) => Some(-1.0),
+            Kind::FarCorner(_) => Some(1.0),
         }
     }
 
@@ -119,7 +125,7 @@ type C64 = faer::complex::Complex<f64>;
 /// The bonded powers of a zone kind.
 fn bonded_powers(kind: Kind) -> usize {
     match kind {
-        Kind::Corner(n) => n,
+        Kind::Corner(n) | Kind::FarCorner(n) => n,
         _ => 0,
     }
 }
@@ -197,6 +203,12 @@ impl Frame {
             let bonded = match s.kind {
                 Kind::Corner(n) => {
                     assert!(i == 0, "a corner zone lies at x = -1");
+                    let b = Bonded::new((k.bp * k.bq).sqrt(), 1.0 - len, len, MAX_DEGREE);
+                    assert!(n <= b.powers(), "at most {} bonded powers", b.powers());
+                    Some(b)
+                }
+                Kind::FarCorner(n) => {
+                    assert!(i + 1 == nz, "a far corner zone lies at x = +1");
                     let b = Bonded::new((k.bp * k.bq).sqrt(), 1.0 - len, len, MAX_DEGREE);
                     assert!(n <= b.powers(), "at most {} bonded powers", b.powers());
                     Some(b)
@@ -304,9 +316,9 @@ impl Frame {
         self.zones[i].kind.sticks()
     }
 
-    /// Whether zone i is a corner zone ([`Kind::Corner`]).
+    /// Whether zone i is a corner zone ([`Kind::Corner`] or [`Kind::FarCorner`]).
     pub(crate) fn is_corner(&self, i: usize) -> bool {
-        matches!(self.zones[i].kind, Kind::Corner(_))
+        matches!(self.zones[i].kind, Kind::Corner(_) | Kind::FarCorner(_))
     }
 
     /// (1 + x, 1 - x) of a point.
@@ -407,6 +419,17 @@ impl Frame {
                 at += 2;
             }
         }
+        if let Kind::FarCorner(np) = z.kind {
+            // (v / len)^(a + j), v = 1 - x = the offset from the zone's upper end +1
+            let a = C64::new(-0.5, -self.eps());
+            let s = l.to_hi / z.len;
+            let mut f = (a * s.ln()).exp();
+            for _ in 0..np {
+                self.bonded_pair(f, f, &mut pv[at..at + 2], &mut qv[at..at + 2]);
+                f *= s;
+                at += 2;
+            }
+        }
     }
 
     /// eps = artanh(b*) / pi, b* = sqrt(bp bq), of the bonded field.
@@ -474,6 +497,21 @@ impl Frame {
                     at += 2;
                 }
             }
+            if let (Kind::FarCorner(np), Some(bx)) = (z.kind, &z.bonded) {
+                // the powers' own interval [1 - len, 1]: 1 - y = hi - x, c - y = -(x - lo)
+                let (xlo, hix) = self.rel(l, j);
+                let mut h = vec![C64::new(0.0, 0.0); np];
+                bx.end_powers(hix, -xlo, &mut h);
+                // divided by len^(a + m)
+                let a = C64::new(-0.5, -self.eps());
+                let mut scale = (-a * z.len.ln()).exp();
+                for hm in h.iter().take(np) {
+                    let v = *hm * scale;
+                    self.bonded_pair(v, v, &mut hp[at..at + 2], &mut hq[at..at + 2]);
+                    scale /= z.len;
+                    at += 2;
+                }
+            }
         }
     }
 
@@ -506,6 +544,18 @@ impl Frame {
                 let beta = C64::new(-0.5, self.eps());
                 for m in 0..np {
                     let v = (beta + (m + 1) as f64).inv() * z.len;
+                    let (mut p2, mut q2) = ([0.0; 2], [0.0; 2]);
+                    self.bonded_pair(v, v, &mut p2, &mut q2);
+                    ip[at..at + 2].copy_from_slice(&p2);
+                    iq[at..at + 2].copy_from_slice(&q2);
+                    at += 2;
+                }
+            }
+            if let Kind::FarCorner(np) = z.kind {
+                // int over the zone of (v / len)^(a + m) = len / (a + m + 1)
+                let a = C64::new(-0.5, -self.eps());
+                for m in 0..np {
+                    let v = (a + (m + 1) as f64).inv() * z.len;
                     let (mut p2, mut q2) = ([0.0; 2], [0.0; 2]);
                     self.bonded_pair(v, v, &mut p2, &mut q2);
                     ip[at..at + 2].copy_from_slice(&p2);
@@ -682,12 +732,18 @@ pub(crate) fn solve_parts(
     // the stick set's components (maximal runs of stick zones), each [lo, hi] as offsets
     // (1 + lo, 1 - hi), with its first and last zone
     let parts = frame.stick_parts();
-    // a component that begins with a corner zone reaches x = -1 with the bonded field's
-    // singularity allowed there: one border constant (bounded at its upper end only,
-    // docs/theory_tangential.md section 20)
+    // a component that begins (ends) with a corner zone reaches x = -1 (+1) with the bonded
+    // field's singularity allowed there: one border constant (bounded at its other end only,
+    // docs/theory_tangential.md sections 20 and 24)
     let per_part: Vec<usize> = parts
         .iter()
-        .map(|&(a, ..)| if frame.is_corner(a) { 1 } else { n_sigma })
+        .map(|&(a, b, ..)| {
+            if frame.is_corner(a) || frame.is_corner(b) {
+                1
+            } else {
+                n_sigma
+            }
+        })
         .collect();
     let first: Vec<usize> = per_part
         .iter()

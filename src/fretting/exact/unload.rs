@@ -590,12 +590,42 @@ fn outer_applies<D: Start + ?Sized>(m: &D) -> bool {
 /// to `qp`, each load from the ends of the two before extrapolated in their logarithms,
 /// steps of [`MARCH_STEP`] Q* at first, doubled after a success (up to [`MAX_MARCH_STEP`]
 /// Q*) and halved after a failure (down to 1e-3 Q*); then the ladder at `qp` from there.
+/// The march's loads serve only as the next load's predictor, so each is solved to
+/// relative steps of [`MARCH_TOL`] only; the chord method's Jacobian is carried from load to
+/// load and into the ladder's first level at `qp` (where it has gone stale the chord method
+/// takes a fresh one, and a failed load drops it before the halved step).
 pub(crate) fn outer_cold<D: Start + ?Sized>(
     m: &Arc<D>,
     qp: f64,
     tol: f64,
     traction_tol: f64,
 ) -> Result<Unloading<D>> {
+    outer_cold_with(m, qp, tol, traction_tol, true)
+}
+
+/// The relative step to which [`outer_cold`]'s march solves each load: the predictor it
+/// serves (the ends extrapolated in their logarithms from the two loads before) is itself
+/// off by the ends' second differences in their logarithms, 1 % .. 39 % in 1 + a1 and
+/// 0.25 % .. 12 % in 1 + e2 per 0.2 Q* on the ply's reloading march (docs/theory_tangential.md
+/// section 23's table, -0.9 Q* to 0.9 Q*), so a march load solved beyond 1e-3 relatively
+/// does not improve the next start;
+/// 1e-3 is also the chord method's restart threshold ([`corner`]'s `RESTART_ABOVE`), above
+/// which its steps are still damped.
+pub(crate) const MARCH_TOL: f64 = 1e-3;
+
+/// [`outer_cold`] (`cheap`), or with every march load solved to relative steps of 1e-8 and
+/// a fresh Jacobian at every load and at the ladder's first level: the march before
+/// [`MARCH_TOL`] and the carried Jacobian, kept for the measurement of what they save
+/// (`measure_cold_march_jacobian`, docs/theory_tangential.md section 24).
+pub(crate) fn outer_cold_with<D: Start + ?Sized>(
+    m: &Arc<D>,
+    qp: f64,
+    tol: f64,
+    traction_tol: f64,
+    cheap: bool,
+) -> Result<Unloading<D>> {
+    let keep = cheap;
+    let march_tol = if cheap { MARCH_TOL } else { 1e-8 };
     let w1 = match m.kinks().first() {
         Some(c) if c.slip_left => c.opx,
         _ => {
@@ -610,6 +640,8 @@ pub(crate) fn outer_cold<D: Start + ?Sized>(
     let (mut t, mut h) = (q_star, MARCH_STEP * q_star);
     let mut before: Option<(f64, corner::OuterEnds)> = None;
     let mut reached = None;
+    let mut jac = None;
+    let mut march_solves = 0;
     while t > qp {
         let next = (t - h).max(qp);
         // the ends extrapolated in their logarithms from the two answers before
@@ -617,14 +649,19 @@ pub(crate) fn outer_cold<D: Start + ?Sized>(
             let r = (next - t) / (t - tb);
             std::array::from_fn(|i| x[i] * (x[i] / xb[i]).powf(r))
         });
-        match corner::outer_level(&**m, guess, next, OUTER_FIRST, 1e-8, &mut None) {
+        if !keep {
+            jac = None;
+        }
+        match corner::outer_level(&**m, guess, next, OUTER_FIRST, march_tol, &mut jac) {
             Ok(o) => {
+                march_solves += o.solves;
                 before = Some((t, x));
                 (t, x) = (next, o.x);
                 h = (2.0 * h).min(MAX_MARCH_STEP * q_star);
                 reached = Some(o);
             }
             Err(e) => {
+                jac = None;
                 h *= 0.5;
                 if h < 1e-3 * q_star {
                     return Err(e.reworded(|msg| {
@@ -649,7 +686,13 @@ pub(crate) fn outer_cold<D: Start + ?Sized>(
             });
         }
     }
-    outer_answer(m, qp, tol, traction_tol, x)
+    if !keep {
+        jac = None;
+    }
+    outer_answer(m, qp, tol, traction_tol, x, &mut jac).map(|mut u| {
+        u.solves += march_solves;
+        u
+    })
 }
 
 /// The first and the largest step of [`outer_cold`]'s march, in units of Q*: the ply's
@@ -663,15 +706,17 @@ const MAX_MARCH_STEP: f64 = 0.2;
 /// ladder), checked ([`Unloading::admissible`], with the layer's margin), its estimates
 /// raised by the terms of the corner zone it leaves out: [`KAPPA`] u0 for the ends and
 /// 6 (1 + delta) |B| sqrt(KAPPA u0) for the tractions in (T1) (section 21), delta =
-/// sqrt(bq/bp); ToleranceNotMet where those exceed the tolerances.
+/// sqrt(bq/bp); ToleranceNotMet where those exceed the tolerances. `jac`: the chord
+/// method's Jacobian to start the ladder's first level from, if any ([`corner::outer`]).
 fn outer_answer<D: Start + ?Sized>(
     m: &Arc<D>,
     qp: f64,
     tol: f64,
     traction_tol: f64,
     start: corner::OuterEnds,
+    jac: &mut Option<[[f64; 3]; 3]>,
 ) -> Result<Unloading<D>> {
-    let c = corner::outer(&**m, qp, tol, traction_tol, start, OUTER_FIRST)?;
+    let c = corner::outer(&**m, qp, tol, traction_tol, start, OUTER_FIRST, jac)?;
     let [e2, wa, w2] = c.level.x;
     let largest = c.level.x.iter().fold(0.0f64, |a, v| a.max(*v));
     let mut u = Unloading {
@@ -730,6 +775,7 @@ pub(crate) struct Unloading<D: Start + ?Sized = Monotonic> {
     pub(crate) c_error: f64,
     pub(crate) traction_error: f64,
     pub(crate) levels: usize,
+    /// Fixed-geometry solves: the ladder's, and a cold outer model's march before it.
     pub(crate) solves: usize,
     /// Per level after the first, the unknowns (wa, w2) ([`super::Trace`]).
     pub(crate) trace: super::Trace,
@@ -857,7 +903,7 @@ pub(crate) fn unload_from<D: Start + ?Sized>(
     if let (Some(e2), Some(w2)) = (prev.level.layer, w2) {
         // the outer model from prev's ends; where it fails (the layer gone), the three-zone
         // pattern from prev's stick set: the hand-over (section 21), then the cold start
-        return match outer_answer(m, qp, tol, traction_tol, [e2, wa, w2]) {
+        return match outer_answer(m, qp, tol, traction_tol, [e2, wa, w2], &mut None) {
             Ok(u) => Ok(u),
             Err(_) => match ladder(m, qp, tol, traction_tol, (wa, Some(w2)), 1, 0) {
                 Ok(u) => Ok(u),

@@ -1361,3 +1361,443 @@ fn measure_reloading_dissipation() {
         }
     }
 }
+
+/// The cost of the cold reloading to +Q* on the ply (mu = 0.3, Q* = 0.6 mu P, tolerances
+/// (1e-8, 1e-5); docs/theory_tangential.md sections 23-24), `outer_cold`'s march from -Q*
+/// and the ladder at +Q*: the cheap march (each load to relative steps of `MARCH_TOL`, the
+/// chord method's Jacobian carried from load to load and into the ladder) against the
+/// march before it (each load to 1e-8, a fresh Jacobian at every load): alternated runs
+/// on the same data, each timed by the thread's CPU time (/proc/thread-self/schedstat) and
+/// the wall clock, with its solves; the answers' ends and tractions against each other and
+/// against their estimates (asserted: within the sum of the two runs' estimates). About
+/// 4 min in one run.
+#[cfg(feature = "measure")]
+#[test]
+#[ignore = "measurement"]
+fn measure_cold_march_jacobian() {
+    use super::super::unload::outer_cold_with;
+    let cpu = || -> f64 {
+        let s = std::fs::read_to_string("/proc/thread-self/schedstat").unwrap();
+        s.split_whitespace().next().unwrap().parse::<f64>().unwrap() * 1e-9
+    };
+    let (mirror, _, q_star) = mirrored_unloaded_ply();
+    let g = edge_exponent(mirror.coupling());
+    let mut runs: Vec<(bool, Unloading<Mirror>)> = Vec::new();
+    for cheap in [false, true, false, true] {
+        let (c0, t0) = (cpu(), std::time::Instant::now());
+        let u = outer_cold_with(&mirror, -q_star, 1e-8, 1e-5, cheap).unwrap();
+        let (c1, t1) = (cpu(), t0.elapsed());
+        let [e2, wa, w2] = [u.level.layer.unwrap(), u.level.wa, u.level.w2.unwrap()];
+        println!(
+            "cheap {cheap}: CPU {:.1} s, wall {:.1} s, {} solves, level {}; 1 + e2 = {e2:.9e}, \
+             1 + a1 = {wa:.9e}, 1 - a2 = {w2:.9e}, estimates {:.1e} (ends), {:.1e} (tractions)",
+            c1 - c0,
+            t1.as_secs_f64(),
+            u.solves,
+            u.levels,
+            u.c_error,
+            u.traction_error
+        );
+        runs.push((cheap, u));
+    }
+    let (fresh, kept) = (&runs[0].1, &runs[1].1);
+    let ends = |u: &Unloading<Mirror>| [u.level.layer.unwrap(), u.level.wa, u.level.w2.unwrap()];
+    let moved: f64 = (0..3).map(|i| (ends(fresh)[i] - ends(kept)[i]).abs()).sum();
+    let dt = distance(g, &fresh.level.state, &kept.level.state);
+    println!(
+        "before against cheap: ends {moved:.2e} (estimates {:.1e} + {:.1e}), tractions {dt:.2e} \
+         (estimates {:.1e} + {:.1e})",
+        fresh.c_error, kept.c_error, fresh.traction_error, kept.traction_error
+    );
+    assert!(moved <= fresh.c_error + kept.c_error);
+    assert!(dt <= fresh.traction_error + kept.traction_error);
+}
+
+/// The reloaded state at +Q* as the data of the second unloading (the ply, mu = 0.3,
+/// Q* = 0.6 mu P; docs/theory_tangential.md section 24): (1) its layer at +1, stuck since
+/// -Q*: the increment since the unloaded state f = (p - p**) + i (q - q**)/delta against
+/// the bonded field v^a B (v = 1 - x, a = -1/2 - i eps): |f| v^(1/2) and arg f + eps ln v
+/// at fractions of the layer; the margin (mu p - q)/(mu p) there, and its log-slope towards
+/// the layer's top; (2) the outer model with a far layer at Q = 0.9 Q* (level 3) from the
+/// width laws. Prints, asserts nothing (about 2 min).
+#[cfg(feature = "measure")]
+#[test]
+#[ignore = "measurement"]
+fn measure_second_unloading_data() {
+    use super::super::unload::corner::{far_fixed, far_level, slip_left};
+    let t = std::time::Instant::now();
+    let (mirror, _, q_star) = mirrored_unloaded_ply();
+    let k = *mirror.coupling();
+    let r = Arc::new(reload(&mirror, q_star, 1e-8, 1e-5).unwrap());
+    let u = &r.mirrored;
+    let (er, w) = (u.level.layer.unwrap(), u.level.w2.unwrap());
+    let (b1, b2) = r.stick_set();
+    println!(
+        "reloaded at +Q*: layer 1 - x < {er:.6e}, 1 - b2 = {:.6e}, 1 + b1 = {w:.6e} ({:.6e}); \
+         estimates {:.1e} {:.1e}; {:?}",
+        1.0 - b2,
+        1.0 + b1,
+        u.c_error,
+        u.traction_error,
+        t.elapsed()
+    );
+    let unloaded = &mirror.inner;
+    let delta = (k.bq / k.bp).sqrt();
+    let eps = (k.bp * k.bq).sqrt().atanh() / std::f64::consts::PI;
+    for f in [0.5, 0.1, 1e-2, 1e-4, 1e-6, 1e-8, 1e-10] {
+        let v = f * er;
+        let (p, q) = r.tractions(2.0 - v, v);
+        let (p0, q0) = unloaded.tractions(2.0 - v, v);
+        let (dp, dq) = (p - p0, (q - q0) / delta);
+        let modulus = dp.hypot(dq) * v.sqrt();
+        let phase = dq.atan2(dp) + eps * v.ln();
+        println!(
+            "v = {f:e} e_r: |f| v^(1/2) = {modulus:.6e}, arg f + eps ln v = {phase:.6}, \
+             (mu p - q)/(mu p) = {:.6e}, data's own margin (mu p** - q**)/(mu p**) = {:.1e}",
+            (k.mu * p - q) / (k.mu * p),
+            (k.mu * p0 - q0) / (k.mu * p0)
+        );
+    }
+    let margin = |d: f64| {
+        let v = er * (1.0 - d);
+        let (p, q) = r.tractions(2.0 - v, v);
+        k.mu * p - q
+    };
+    for (d0, d1) in [(1e-8, 1e-6), (1e-6, 1e-4), (1e-4, 1e-2)] {
+        println!(
+            "margin's log-slope below the layer's top, d = {d0:e} .. {d1:e}: {:.5}",
+            (margin(d1) / margin(d0)).ln() / (d1 / d0).ln()
+        );
+    }
+    let x0 = [0.08 * w, 1.05 * w, 0.9 * w, 0.9 * er];
+    let qp = 0.9 * q_star;
+    let t = std::time::Instant::now();
+    match far_fixed(&*r, x0, qp, 3) {
+        Ok(s) => println!(
+            "at the start {x0:?}: sigma {:?}; {:?}",
+            s.sigma,
+            t.elapsed()
+        ),
+        Err(e) => println!("at the start: {e}"),
+    }
+    let t = std::time::Instant::now();
+    match far_level(&*r, x0, qp, 3, 1e-8, &mut None) {
+        Ok(o) => {
+            let [e2, wa, w2, wd] = o.x;
+            println!(
+                "Q = 0.9 Q*, level 3: 1 + e2 = {e2:.6e} ({:.4} w), 1 + a1 = {wa:.6e} ({:.4} w), \
+                 1 - a2 = {w2:.6e} ({:.4} w), 1 - d2 = {wd:.6e} ({:.4} e_r); sigma {:?}, step \
+                 {:.1e}, {} solves, {:?}",
+                e2 / w,
+                wa / w,
+                w2 / w,
+                wd / er,
+                o.state.sigma,
+                o.step,
+                o.solves,
+                t.elapsed()
+            );
+            let s = &o.state;
+            for f in [1e-6, 1e-3, 0.1, 0.5, 0.9] {
+                let lead = slip_left(s, &*r, e2 + f * (wa - e2), e2);
+                let a2 = 2.0 - w2;
+                let d2 = 2.0 - wd;
+                let trail = slip_left(s, &*r, a2 + f * (d2 - a2), a2);
+                println!(
+                    "fraction {f}: leading zone slip {lead:.3e}, trailing zone slip {trail:.3e}"
+                );
+            }
+            for f in [0.99, 0.9, 0.5, 0.1, 1e-2, 1e-4, 1e-6] {
+                let v = f * wd;
+                let (p, q) = s.tractions(2.0 - v, v);
+                println!(
+                    "far layer at {f:e} of it: (mu p - q)/(mu p) = {:.4e}",
+                    (k.mu * p - q) / (k.mu * p)
+                );
+            }
+        }
+        Err(e) => println!("Q = 0.9 Q*: {e}; {:?}", t.elapsed()),
+    }
+}
+
+/// The energy dissipated between two states `a` (higher load) and `b` of the second
+/// unloading (docs/theory_tangential.md section 24), on b's two slip zones: each lies
+/// between two stick components (the layer and the stick set, the stick set and the far
+/// layer), so the slip increment ds vanishes at both of its ends and by parts
+/// int_Z mu p_mid |ds| = |int_Z dslope M|, M = int mu p_mid from one end, dslope =
+/// -(bq (p_b - p_a) + H[q_b] - H[q_a]) ((T17) with both ends stuck); the leading zone in
+/// 1 + x from e2, the trailing zone in 1 - x from d2, cut at a's ends and the data's kinks.
+/// `a` None is the data itself (the step from +Q*: its slip since +Q* is zero, and
+/// dslope = -(H[q_b] + bq p_b - r_r)). A node whose slope is not finite (one that rounds onto
+/// a zone end of either state, where the zones' H[q] is NaN; weight below 1e-14 of its
+/// piece) counts as zero.
+#[cfg(feature = "measure")]
+fn second_unloading_step_dissipation<D: Start + ?Sized>(
+    m: &D,
+    a: Option<&super::super::frame::Solved>,
+    xa: [f64; 4],
+    b: &super::super::frame::Solved,
+    xb: [f64; 4],
+) -> f64 {
+    use super::super::unload::by_parts;
+    let k = m.coupling();
+    let g = edge_exponent(k);
+    let both = |opx: f64, omx: f64| {
+        let lb = b.frame.locate(opx, omx);
+        let (pb, _) = b.tractions_at(&lb);
+        let (_, hb) = b.hilbert_at(&lb);
+        let (pa, ra) = match a {
+            Some(a) => {
+                let la = a.frame.locate(opx, omx);
+                let (pa, _) = a.tractions_at(&la);
+                let (_, ha) = a.hilbert_at(&la);
+                (pa, ha + k.bq * pa)
+            }
+            None => (m.tractions(opx, omx).0, m.forcing(opx, omx)),
+        };
+        let slope = -(hb + k.bq * pb - ra);
+        (
+            0.5 * k.mu * (pa + pb),
+            if slope.is_finite() { slope } else { 0.0 },
+        )
+    };
+    let kinks: Vec<f64> = m.kinks().iter().map(|c| c.opx).collect();
+    // the leading zone (e2, a1) of b, in o = 1 + x - e2
+    let (e2, wa) = (xb[0], xb[1]);
+    let mut cuts = vec![0.0, wa - e2];
+    for c in kinks.iter().chain(&[xa[0], xa[1]]) {
+        if *c > e2 && *c < wa {
+            cuts.push(c - e2);
+        }
+    }
+    cuts.sort_by(f64::total_cmp);
+    cuts.dedup();
+    let lead = by_parts(g, &cuts, &|o| both(e2 + o, 2.0 - e2 - o).0, &|o| {
+        both(e2 + o, 2.0 - e2 - o).1
+    });
+    // the trailing zone (a2, d2) of b, in o = 1 - x - (1 - d2)
+    let (w2, wd) = (xb[2], xb[3]);
+    let mut cuts = vec![0.0, w2 - wd];
+    for c in kinks.iter().map(|c| 2.0 - c).chain([xa[2], xa[3]]) {
+        if c > wd && c < w2 {
+            cuts.push(c - wd);
+        }
+    }
+    cuts.sort_by(f64::total_cmp);
+    cuts.dedup();
+    let trail = by_parts(g, &cuts, &|o| both(2.0 - wd - o, wd + o).0, &|o| {
+        both(2.0 - wd - o, wd + o).1
+    });
+    lead.abs() + trail.abs()
+}
+
+/// The second unloading on the ply (mu = 0.3, Q* = 0.6 mu P; docs/theory_tangential.md
+/// section 24): the reloaded state at +Q* (to (1e-8, 1e-5)) as data, the outer model with
+/// a far layer marched from +Q* to -Q* at level `ORTHOSLIP_LEVEL` (3 by default) in steps of
+/// 0.1 Q*, halved after a failure down to 0.0125 Q* (the first from the width laws); where
+/// the far model finds no root, section 20's outer model on the same data (the far layer
+/// gone); each from the ends of the two before extrapolated in their logarithms, the
+/// Jacobian carried: the ends, the border constants, the slips' signs in both zones at
+/// 1e-6 .. 0.9 of their widths (each from its nearer stick end), the far layer's margin; at
+/// the last load reached int p, int q by quadrature, the residuals between collocation
+/// points, the moment against the first unloaded state's; the grid's second unloading
+/// (N = 200, 400); the dissipation W2 summed by [`second_unloading_step_dissipation`] over
+/// the steps and over every other state. Prints, asserts nothing (about 9-16 min).
+#[cfg(feature = "measure")]
+#[test]
+#[ignore = "measurement"]
+fn measure_second_unloading_march() {
+    use super::super::moment;
+    use super::super::unload::corner::{far_level, outer_level, slip_left};
+    let level: usize = std::env::var("ORTHOSLIP_LEVEL")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(3);
+    let t0 = std::time::Instant::now();
+    let k = ply();
+    let q_star = 0.6 * k.mu;
+    let loaded = Arc::new(monotonic(&k, q_star, 1e-10, 1e-8).unwrap());
+    let unloaded = Arc::new(unload(&loaded, -q_star, 1e-10, 1e-5).unwrap());
+    let first_moment = unloaded.moment();
+    let mirror = Arc::new(Mirror { inner: unloaded });
+    let g = edge_exponent(&k);
+    let r = Arc::new(reload(&mirror, q_star, 1e-8, 1e-5).unwrap());
+    let (er, w) = (
+        r.mirrored.level.layer.unwrap(),
+        r.mirrored.level.w2.unwrap(),
+    );
+    println!("data {:?}: e_r = {er:.6e}, w = {w:.6e}", t0.elapsed());
+    let mut x = [0.08 * w, 1.05 * w, 0.9 * w, 0.9 * er];
+    let mut before: Option<(f64, [f64; 4])> = None;
+    let mut tq = q_star;
+    let (mut jac, mut jac3, mut far, mut running) = (None, None, true, 0.0);
+    struct Probe {
+        x: [f64; 4],
+        state: super::super::frame::Solved,
+        step: f64,
+        solves: usize,
+    }
+    let mut states: Vec<(f64, super::super::frame::Solved, [f64; 4])> = Vec::new();
+    // steps of 0.1 Q*, halved after a failure (down to 0.0125 Q*) and doubled back after a
+    // success, as `outer_cold`'s march
+    let mut h: f64 = 0.1;
+    let mut done: f64 = 1.0;
+    while done > -1.0 + 1e-12 {
+        let f = (done - h).max(-1.0);
+        let next = f * q_star;
+        let guess = before.map_or(x, |(tb, xb)| {
+            let rr = (next - tq) / (tq - tb);
+            std::array::from_fn(|j| x[j] * (x[j] / xb[j]).powf(rr))
+        });
+        let t = std::time::Instant::now();
+        let near = |jac3: &mut Option<[[f64; 3]; 3]>| {
+            outer_level(&*r, [guess[0], guess[1], guess[2]], next, level, 1e-8, jac3)
+                .map(|o| ([o.x[0], o.x[1], o.x[2], 0.0], o.state, o.step, o.solves))
+        };
+        let was_far = far;
+        let solved = if far {
+            far_level(&*r, guess, next, level, 1e-8, &mut jac)
+                .map(|o| (o.x, o.state, o.step, o.solves))
+                .or_else(|e| {
+                    // the far layer gone: the outer model at -1 with the trailing zone
+                    // reaching +1
+                    println!("Q/Q* = {f:.4}: {e}; the outer model without the far layer");
+                    far = false;
+                    near(&mut jac3)
+                })
+        } else {
+            near(&mut jac3)
+        };
+        let (ox, state, step, solves) = match solved {
+            Ok(v) => v,
+            Err(e) => {
+                println!("Q/Q* = {f:.4}: {e}; {:?}", t.elapsed());
+                far = was_far;
+                jac = None;
+                jac3 = None;
+                h *= 0.5;
+                if h < 0.0125 {
+                    break;
+                }
+                continue;
+            }
+        };
+        done = f;
+        h = (2.0 * h).min(0.1);
+        let o = Probe {
+            x: ox,
+            state,
+            step,
+            solves,
+        };
+        let [e2, wa, w2, wd] = o.x;
+        let s = &o.state;
+        let mut signs = (true, true);
+        for fr in [1e-6, 1e-3, 0.1, 0.5, 0.9] {
+            let ol = e2 + fr * (wa - e2);
+            let lead = if fr < 0.5 {
+                slip_left(s, &*r, ol, e2)
+            } else {
+                slip_left(s, &*r, ol, wa)
+            };
+            let (a2, d2) = (2.0 - w2, 2.0 - wd);
+            let ot = d2 - fr * (d2 - a2);
+            let trail = if fr < 0.5 && wd > 0.0 {
+                slip_left(s, &*r, ot, d2)
+            } else {
+                slip_left(s, &*r, ot, a2)
+            };
+            signs.0 &= lead > 0.0;
+            signs.1 &= trail < 0.0;
+        }
+        let margin = [0.99, 0.5, 1e-2, 1e-6].map(|fr: f64| {
+            let v = fr * wd;
+            let (p, q) = s.tractions(2.0 - v, v);
+            (k.mu * p - q) / (k.mu * p)
+        });
+        let dw = match states.last() {
+            Some((_, sa, xa)) => second_unloading_step_dissipation(&*r, Some(sa), *xa, s, o.x),
+            None => second_unloading_step_dissipation(&*r, None, o.x, s, o.x),
+        };
+        println!(
+            "Q/Q* = {f:.4}: 1 + e2 = {e2:.6e} ({:.4} w), 1 + a1 = {wa:.6e} ({:.4} w), \
+             1 - a2 = {w2:.6e} ({:.4} w), 1 - d2 = {wd:.6e} ({:.4} e_r); constants {:.1e} \
+             {:.1e} {:.1e} {:.1e}; step {:.1e}; slips forwards {} backwards {}; far layer \
+             margin {:.3e} {:.3e} {:.3e} {:.3e}; dW {dw:.4e}, W2 so far {:.6e}; {} solves, {:?}",
+            e2 / w,
+            wa / w,
+            w2 / w,
+            wd / er,
+            s.sigma[0],
+            s.sigma[1],
+            s.sigma[2],
+            s.sigma.get(3).copied().unwrap_or(f64::NAN),
+            o.step,
+            signs.0,
+            signs.1,
+            margin[0],
+            margin[1],
+            margin[2],
+            margin[3],
+            running + dw,
+            o.solves,
+            t.elapsed()
+        );
+        running += dw;
+        before = Some((tq, x));
+        tq = next;
+        x = o.x;
+        states.push((f, o.state, o.x));
+    }
+    // W2 from +Q* over the loads reached, with every state and with every other one (steps
+    // of 0.1 Q* and 0.2 Q*; the trapezoidal rule in the load, second order)
+    for stride in [1, 2] {
+        let mut total = 0.0;
+        let mut from: Option<usize> = None;
+        let mut j = stride - 1;
+        while j < states.len() {
+            let (_, sb, xb) = &states[j];
+            total += match from {
+                Some(i) => {
+                    second_unloading_step_dissipation(&*r, Some(&states[i].1), states[i].2, sb, *xb)
+                }
+                None => second_unloading_step_dissipation(&*r, None, *xb, sb, *xb),
+            };
+            println!(
+                "stride {stride}: W2 from +Q* to {:.1} Q* = {total:.6e}",
+                states[j].0
+            );
+            from = Some(j);
+            j += stride;
+        }
+    }
+    if let Some((_, s, _)) = states.last() {
+        let (ip, iq) = quadrature_forces(g, s);
+        let res = s.residual_between_points(&|a: f64, b: f64| r.forcing(a, b));
+        println!(
+            "at the last load: int p - 1 = {:.1e}, int q - Q/P = {:.1e} (Q/P = {tq}), residual \
+             between points {res:.1e}, moment {:.10e}; the first unloaded state's {:.10e}",
+            ip - 1.0,
+            iq - tq,
+            moment(g, s),
+            first_moment
+        );
+    }
+    for n in [200, 400] {
+        let mut h = History::new(&k, n).unwrap();
+        let hh = h.h();
+        h.load(q_star, 1).unwrap();
+        let un = h.load(-q_star, 1).unwrap().pop().unwrap();
+        h.load(q_star, 1).unwrap();
+        let un2 = h.load(-q_star, 1).unwrap().pop().unwrap();
+        println!(
+            "grid N = {n}: moment after the second unloading {:.10e} (first {:.10e}), all \
+             stick {}",
+            un2.moment(hh),
+            un.moment(hh),
+            un2.zones
+                .iter()
+                .all(|z| *z == crate::lcp::history::Zone::Stick)
+        );
+    }
+}

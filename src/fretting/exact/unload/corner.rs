@@ -222,7 +222,12 @@ pub(crate) fn outer_powers(level: usize) -> usize {
 /// and the bonded powers), the rest of the layer (stick; {0} for p at both ends, q {0} at
 /// its lower end and {0, 1 - g} at e2), the leading zone ({0, 1 - g} at e2, {0, g} at a1),
 /// then the three-zone pattern's stick set and trailing zone ([`specs`]).
-fn outer_specs(k: &Coupling, kinks: &[super::Kink], x: OuterEnds, level: usize) -> Vec<ZoneSpec> {
+pub(crate) fn outer_specs(
+    k: &Coupling,
+    kinks: &[super::Kink],
+    x: OuterEnds,
+    level: usize,
+) -> Vec<ZoneSpec> {
     let [e2, wa, w2] = x;
     let g = edge_exponent(k);
     let mut rest = specs(k, kinks, wa, Some(w2));
@@ -325,7 +330,8 @@ pub(crate) const OUTER_TRACTION_FACTOR: f64 = 4.0;
 /// The outer model at Q/P = `qp` from the ends `start`, by the ladder of levels `first`,
 /// `first` + 1, ... (section 11's, [`super::super::ladder`]) until its estimates, raised by
 /// [`OUTER_END_FACTOR`] and [`OUTER_TRACTION_FACTOR`], are within `tol` (the ends) and
-/// `traction_tol` (the tractions); the Jacobian is kept between levels.
+/// `traction_tol` (the tractions); the chord method's Jacobian `jac` is kept between levels
+/// (given, the first level starts from it: a march's at a nearby load, [`super::outer_cold`]).
 pub(crate) fn outer<D: Start + ?Sized>(
     m: &D,
     qp: f64,
@@ -333,9 +339,9 @@ pub(crate) fn outer<D: Start + ?Sized>(
     traction_tol: f64,
     start: OuterEnds,
     first: usize,
+    jac: &mut Option<[[f64; 3]; 3]>,
 ) -> Result<super::super::Climbed<OuterLevel>> {
     let g = edge_exponent(m.coupling());
-    let mut jac = None;
     let climbed = super::super::ladder(
         g,
         first,
@@ -344,7 +350,7 @@ pub(crate) fn outer<D: Start + ?Sized>(
         0,
         |level, prev: Option<&OuterLevel>| {
             let x0 = prev.map_or(start, |p| p.x);
-            outer_level(m, x0, qp, level, 0.1 * tol, &mut jac)
+            outer_level(m, x0, qp, level, 0.1 * tol, jac)
         },
     )?;
     climbed
@@ -465,4 +471,155 @@ pub(crate) fn first_zero(st: &Solved, mu: f64, top: f64, ratio: f64) -> Option<f
         lo *= ratio;
     }
     None
+}
+
+/// The second unloading's outer model (docs/theory_tangential.md section 24; not routed yet:
+/// `unload` refuses data with a layer, and the section's measurements call these items
+/// directly): from a data state with a stuck layer at +1 (the reloaded state at +Q*), the
+/// ends 1 + e2, 1 + a1, 1 - a2 as [`OuterEnds`] and 1 - d2, the far layer (d2, 1) stuck
+/// since the data.
+#[cfg_attr(not(feature = "measure"), allow(dead_code))]
+pub(crate) type FarEnds = [f64; 4];
+
+/// The zones of the outer model with a far layer: [`outer_specs`]'s corner zone, layer,
+/// leading zone and stick set; the trailing zone (a2, d2) slipping with q = +mu p ({0, g}
+/// at a2, {0, 1 - g} at d2, where it lies left of a stick point: the mirror of e2); the far
+/// layer's stick zone ({0} for p at both ends, q {0, 1 - g} at d2 and {0} at its top) and
+/// the far corner zone (1 - INNER (1 - d2), 1) with the data's state on the bound
+/// q = +mu p (exponent -g at +1) and the bonded powers ([`Kind::FarCorner`]).
+#[cfg_attr(not(feature = "measure"), allow(dead_code))]
+pub(crate) fn far_specs(
+    k: &Coupling,
+    kinks: &[super::Kink],
+    x: FarEnds,
+    level: usize,
+) -> Vec<ZoneSpec> {
+    let [e2, wa, w2, wd] = x;
+    let g = edge_exponent(k);
+    let mut zones = outer_specs(k, kinks, [e2, wa, w2], level);
+    zones.pop();
+    let inner = INNER * wd;
+    zones.push(ZoneSpec {
+        kind: Kind::Slip(1.0),
+        len: w2 - wd,
+        p: [vec![0.0, g], vec![0.0, 1.0 - g]],
+        q: [vec![], vec![]],
+        near: [None, None],
+    });
+    zones.push(ZoneSpec {
+        kind: Kind::Stick,
+        len: wd - inner,
+        p: [vec![0.0], vec![0.0]],
+        q: [vec![0.0, 1.0 - g], vec![0.0]],
+        near: [None, None],
+    });
+    zones.push(ZoneSpec {
+        kind: Kind::FarCorner(outer_powers(level)),
+        len: inner,
+        p: [vec![0.0], vec![-g]],
+        q: [vec![], vec![]],
+        near: [None, None],
+    });
+    zones
+}
+
+/// The fixed-ends solve of the outer model with a far layer at Q/P = `qp` from the state
+/// `m`: four border constants (the layer's, the stick set's two, the far layer's) and (C2)
+/// across both slip zones between stick components. The far layer must hold none of the
+/// data's kinks (InvalidArgument otherwise: its bases carry none).
+#[cfg_attr(not(feature = "measure"), allow(dead_code))]
+pub(crate) fn far_fixed<D: Start + ?Sized>(
+    m: &D,
+    x: FarEnds,
+    qp: f64,
+    level: usize,
+) -> Result<Solved> {
+    let k = m.coupling();
+    let [e2, wa, w2, wd] = x;
+    if !(0.0 < e2 && e2 < wa && 0.0 < wd && wd < w2 && wa + w2 < 2.0) {
+        return Err(Error::InvalidArgument(format!(
+            "exact corner (far layer): ends out of order (1 + e2 = {e2:e}, 1 + a1 = {wa:e}, \
+             1 - a2 = {w2:e}, 1 - d2 = {wd:e})"
+        )));
+    }
+    if let Some(c) = m.kinks().iter().find(|c| 2.0 - c.opx < wd) {
+        return Err(Error::InvalidArgument(format!(
+            "exact corner (far layer): the far layer 1 - x < {wd:e} holds the data's kink at \
+             1 - x = {:e}",
+            2.0 - c.opx
+        )));
+    }
+    solve_on_kinks(m, qp, level, |kinks| far_specs(k, kinks, x, level))
+}
+
+/// The outer model with a far layer at one level.
+#[cfg_attr(not(feature = "measure"), allow(dead_code))]
+pub(crate) struct FarLevel {
+    pub(crate) x: FarEnds,
+    pub(crate) state: Solved,
+    /// The last Newton step's largest move of an end, relative to that end's offset.
+    pub(crate) step: f64,
+    pub(crate) solves: usize,
+}
+
+/// The four border constants' root in the logarithms of the ends from `x0`, by the chord
+/// method as [`outer_level`] (a step to either layer below [`LAYER_MIN`] ends it).
+#[cfg_attr(not(feature = "measure"), allow(dead_code))]
+pub(crate) fn far_level<D: Start + ?Sized>(
+    m: &D,
+    x0: FarEnds,
+    qp: f64,
+    level: usize,
+    tol: f64,
+    jac: &mut Option<[[f64; 4]; 4]>,
+) -> Result<FarLevel> {
+    let mut lx = x0.map(f64::ln);
+    let mut restarts = 0;
+    let mut solves = 0;
+    loop {
+        let (next, state, step) = chord(
+            lx,
+            [1e-3; 4],
+            tol,
+            super::MAX_NEWTON,
+            jac,
+            |lx: FarEnds| {
+                solves += 1;
+                far_fixed(m, lx.map(f64::exp), qp, level)
+            },
+            |s: &Solved| [s.sigma[0], s.sigma[1], s.sigma[2], s.sigma[3]],
+            |lx: FarEnds, d: FarEnds| {
+                let big = d.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+                let damp = (std::f64::consts::LN_2 / big).min(1.0);
+                let next: FarEnds = std::array::from_fn(|i| lx[i] + damp * d[i]);
+                if next[0].exp() < LAYER_MIN || next[3].exp() < LAYER_MIN {
+                    return Err(Error::NoConvergence(format!(
+                        "exact corner (far layer): a layer vanishes (a step to 1 + e2 = {:e}, \
+                         1 - d2 = {:e}, below {LAYER_MIN:e})",
+                        next[0].exp(),
+                        next[3].exp()
+                    )));
+                }
+                Ok((next, big))
+            },
+        )?;
+        lx = next;
+        if restarts == RESTARTS && step > RESTART_ABOVE {
+            return Err(Error::NoConvergence(format!(
+                "exact corner (far layer): the chord method still takes relative steps of \
+                 {step:e} after {RESTARTS} restarts (ends {:?})",
+                lx.map(f64::exp)
+            )));
+        }
+        if step <= tol.max(RESTART_ABOVE) || restarts == RESTARTS {
+            return Ok(FarLevel {
+                x: lx.map(f64::exp),
+                state,
+                step,
+                solves,
+            });
+        }
+        restarts += 1;
+        *jac = None;
+    }
 }

@@ -1061,7 +1061,7 @@ fn outer_model_on_the_ply() {
     let w1 = m.stick_set().0;
     let start = [0.08 * w1, 1.05 * w1, 0.9 * w1];
     let t = std::time::Instant::now();
-    let c = corner::outer(&m, qp, 1e-10, 1e-8, start, 3).unwrap();
+    let c = corner::outer(&m, qp, 1e-10, 1e-8, start, 3, &mut None).unwrap();
     let o = &c.level;
     let [e2, wa, w2] = o.x;
     println!(
@@ -1213,7 +1213,7 @@ fn measure_outer_estimates() {
         let t = std::time::Instant::now();
         // the ladder's stopping test with both factors 1: the raw estimates within
         // (1e-10, 1e-8)
-        let c = match corner::outer(&m, qp, 1e-10 * fe, 1e-8 * ft, x, 3) {
+        let c = match corner::outer(&m, qp, 1e-10 * fe, 1e-8 * ft, x, 3, &mut None) {
             Ok(c) => c,
             Err(e) => {
                 println!("Q/Q* = {frac}: {e}");
@@ -1485,4 +1485,81 @@ fn measure_three_zone_phase_dissipation() {
         );
     }
     println!("{:?}", t.elapsed());
+}
+
+/// The far corner's columns ([`Kind::FarCorner`], docs/theory_tangential.md section 24)
+/// against the corner's at -1 ([`Kind::Corner`], checked against quadrature and the
+/// five-zone solver, sections 19-20): the outer model's fixed-ends solve at strong coupling
+/// (b* = 0.9, mu~ = 1, Q* = 0.3 mu P, Q = 0.9 Q*, level 3, section 20's ends) and the same
+/// problem mirrored (x -> -x, q -> -q: the zones reversed, each zone's end exponents
+/// swapped, the slip signs turned, the corner zone at +1, the data seen through [`Mirror`],
+/// Q -> -Q) give the same border constants (the stick set's tau-term with its sign turned,
+/// tau -> -tau) and mirrored tractions, p(x) = p~(-x), q(x) = -q~(-x): the far corner's
+/// bonded powers, their transforms (the bonded module's own interval, no reflection), their
+/// integrals, the one border constant of a component that ends at +1 and the gap row
+/// across a slip zone next to it. The two are different least-squares problems in floating
+/// point (the columns in another order, other pivots of a near-dependent frame), so they
+/// agree to the frame's noise, not to rounding: asserted within the change of the same
+/// solve from level 3 to level 4 (measured: the tractions 3.0e-7 apart relatively to p at
+/// 13 points from 1 + x = 1e-9 to 1 - x = 1e-4, against 5.7e-7 between the levels; the
+/// constants 9.1e-10, 1.1e-10, 2.7e-10, against 1.4e-8, 1.1e-9, 1.0e-9). A sign or a
+/// conjugate wrong in the far corner's columns moves the answer by orders more.
+#[test]
+fn far_corner_mirrors_the_corner() {
+    use super::super::frame::{Kind, Sizes, ZoneSpec, solve_parts};
+    let k = strong();
+    let q_star = 0.3;
+    let qp = 0.9 * q_star;
+    let m = Arc::new(monotonic(&k, q_star, 1e-10, 1e-8).unwrap());
+    let x = [7.358230e-3, 1.0 - 0.919174656, 7.653723e-2];
+    let s = corner::outer_fixed(&*m, x, qp, 3).unwrap();
+    let s4 = corner::outer_fixed(&*m, x, qp, 4).unwrap();
+    let specs = corner::outer_specs(&k, &m.kinks(), x, 3);
+    let mirrored: Vec<ZoneSpec> = specs
+        .iter()
+        .rev()
+        .map(|z| ZoneSpec {
+            kind: match z.kind {
+                Kind::Slip(sg) => Kind::Slip(-sg),
+                Kind::Corner(n) => Kind::FarCorner(n),
+                other => other,
+            },
+            len: z.len,
+            p: [z.p[1].clone(), z.p[0].clone()],
+            q: [z.q[1].clone(), z.q[0].clone()],
+            near: [z.near[1], z.near[0]],
+        })
+        .collect();
+    let mirror = Mirror { inner: m.clone() };
+    let cuts: Vec<f64> = mirror.kinks().iter().map(|c| c.opx).collect();
+    let forcing = |opx: f64, omx: f64| mirror.forcing(opx, omx);
+    let t = solve_parts(k, &mirrored, Sizes::at(3), 2, -qp, &forcing, &cuts).unwrap();
+    println!(
+        "sigma {:?}, level 4 {:?}, mirrored {:?}",
+        s.sigma, s4.sigma, t.sigma
+    );
+    let mirrored_sigma = [t.sigma[2], t.sigma[0], -t.sigma[1]];
+    for (i, ((a, b), c)) in s
+        .sigma
+        .iter()
+        .zip(mirrored_sigma)
+        .zip(&s4.sigma)
+        .enumerate()
+    {
+        let (d, levels) = ((a - b).abs(), (a - c).abs());
+        println!("constant {i}: mirrored {d:.1e}, level 4 {levels:.1e}");
+        assert!(d < levels, "{d:e} {levels:e}");
+    }
+    let (mut worst, mut levels) = (0.0f64, 0.0f64);
+    for o in [
+        1e-9, 1e-6, 3e-4, 4e-3, 7e-3, 0.03, 0.08, 0.3, 1.0, 1.7, 1.92, 1.99, 1.9999,
+    ] {
+        let (p, q) = s.tractions(o, 2.0 - o);
+        let (p4, q4) = s4.tractions(o, 2.0 - o);
+        let (pm, qm) = t.tractions(2.0 - o, o);
+        worst = worst.max(((p - pm).abs() + (q + qm).abs()) / p.abs());
+        levels = levels.max(((p - p4).abs() + (q - q4).abs()) / p.abs());
+    }
+    println!("tractions: mirrored {worst:.1e}, level 4 {levels:.1e} (relative to p)");
+    assert!(worst < levels, "{worst:e} {levels:e}");
 }
