@@ -276,14 +276,17 @@ pub(crate) fn outer_fixed<D: Start + ?Sized>(
     solve_on_kinks(m, qp, level, |kinks| outer_specs(k, kinks, x, level))
 }
 
-/// The outer model at one level.
-pub(crate) struct OuterLevel {
-    pub(crate) x: OuterEnds,
+/// A layered outer model at one level: its N ends, the solution there, the last step.
+pub(crate) struct LayeredLevel<const N: usize> {
+    pub(crate) x: [f64; N],
     pub(crate) state: Solved,
     /// The last Newton step's largest move of an end, relative to that end's offset.
     pub(crate) step: f64,
     pub(crate) solves: usize,
 }
+
+/// A level of the outer model (three ends, [`outer_level`]).
+pub(crate) type OuterLevel = LayeredLevel<3>;
 
 /// A ladder's rung: the trace shows 1 + e2 and 1 - a2; the change sums all three ends; the
 /// step is made absolute by the largest end (an upper bound of every end's move).
@@ -391,30 +394,48 @@ pub(crate) fn outer_level<D: Start + ?Sized>(
     tol: f64,
     jac: &mut Option<[[f64; 3]; 3]>,
 ) -> Result<OuterLevel> {
+    layered_level(x0, tol, jac, "outer", &[0], |x| {
+        outer_fixed(m, x, qp, level)
+    })
+}
+
+/// The border constants' root in the logarithms of the ends from `x0` by the chord method
+/// (steps damped to a factor 2 in the largest end, restarted with a fresh Jacobian up to
+/// [`RESTARTS`] times while they stay above [`RESTART_ABOVE`]), `solve` giving the solution
+/// at given ends; a step taking an end of `layers` below [`LAYER_MIN`] ends it (the layer
+/// vanishes). `what` names the model in the messages.
+fn layered_level<const N: usize>(
+    x0: [f64; N],
+    tol: f64,
+    jac: &mut Option<[[f64; N]; N]>,
+    what: &str,
+    layers: &[usize],
+    mut solve: impl FnMut([f64; N]) -> Result<Solved>,
+) -> Result<LayeredLevel<N>> {
     let mut lx = x0.map(f64::ln);
     let mut restarts = 0;
     let mut solves = 0;
     loop {
         let (next, state, step) = chord(
             lx,
-            [1e-3; 3],
+            [1e-3; N],
             tol,
             super::MAX_NEWTON,
             jac,
-            |lx: OuterEnds| {
+            |lx: [f64; N]| {
                 solves += 1;
-                outer_fixed(m, lx.map(f64::exp), qp, level)
+                solve(lx.map(f64::exp))
             },
-            |s: &Solved| [s.sigma[0], s.sigma[1], s.sigma[2]],
-            |lx: OuterEnds, d: OuterEnds| {
+            |s: &Solved| std::array::from_fn(|i| s.sigma[i]),
+            |lx: [f64; N], d: [f64; N]| {
                 let big = d.iter().fold(0.0f64, |a, v| a.max(v.abs()));
                 let damp = (std::f64::consts::LN_2 / big).min(1.0);
-                let next: OuterEnds = std::array::from_fn(|i| lx[i] + damp * d[i]);
-                if next[0].exp() < LAYER_MIN {
+                let next: [f64; N] = std::array::from_fn(|i| lx[i] + damp * d[i]);
+                if layers.iter().any(|&i| next[i].exp() < LAYER_MIN) {
                     return Err(Error::NoConvergence(format!(
-                        "exact corner (outer): the layer vanishes (a step to 1 + e2 = {:e}, \
-                         below {LAYER_MIN:e})",
-                        next[0].exp()
+                        "exact corner ({what}): the layer vanishes (a step to the layers' \
+                         widths {:?}, below {LAYER_MIN:e})",
+                        layers.iter().map(|&i| next[i].exp()).collect::<Vec<_>>()
                     )));
                 }
                 Ok((next, big))
@@ -423,13 +444,13 @@ pub(crate) fn outer_level<D: Start + ?Sized>(
         lx = next;
         if restarts == RESTARTS && step > RESTART_ABOVE {
             return Err(Error::NoConvergence(format!(
-                "exact corner (outer): the chord method still takes relative steps of \
+                "exact corner ({what}): the chord method still takes relative steps of \
                  {step:e} after {RESTARTS} restarts (ends {:?})",
                 lx.map(f64::exp)
             )));
         }
         if step <= tol.max(RESTART_ABOVE) || restarts == RESTARTS {
-            return Ok(OuterLevel {
+            return Ok(LayeredLevel {
                 x: lx.map(f64::exp),
                 state,
                 step,
@@ -552,15 +573,8 @@ pub(crate) fn far_fixed<D: Start + ?Sized>(
     solve_on_kinks(m, qp, level, |kinks| far_specs(k, kinks, x, level))
 }
 
-/// The outer model with a far layer at one level.
-#[cfg_attr(not(feature = "measure"), allow(dead_code))]
-pub(crate) struct FarLevel {
-    pub(crate) x: FarEnds,
-    pub(crate) state: Solved,
-    /// The last Newton step's largest move of an end, relative to that end's offset.
-    pub(crate) step: f64,
-    pub(crate) solves: usize,
-}
+/// The outer model with a far layer at one level (four ends, [`far_level`]).
+pub(crate) type FarLevel = LayeredLevel<4>;
 
 /// The four border constants' root in the logarithms of the ends from `x0`, by the chord
 /// method as [`outer_level`] (a step to either layer below [`LAYER_MIN`] ends it).
@@ -573,53 +587,7 @@ pub(crate) fn far_level<D: Start + ?Sized>(
     tol: f64,
     jac: &mut Option<[[f64; 4]; 4]>,
 ) -> Result<FarLevel> {
-    let mut lx = x0.map(f64::ln);
-    let mut restarts = 0;
-    let mut solves = 0;
-    loop {
-        let (next, state, step) = chord(
-            lx,
-            [1e-3; 4],
-            tol,
-            super::MAX_NEWTON,
-            jac,
-            |lx: FarEnds| {
-                solves += 1;
-                far_fixed(m, lx.map(f64::exp), qp, level)
-            },
-            |s: &Solved| [s.sigma[0], s.sigma[1], s.sigma[2], s.sigma[3]],
-            |lx: FarEnds, d: FarEnds| {
-                let big = d.iter().fold(0.0f64, |a, v| a.max(v.abs()));
-                let damp = (std::f64::consts::LN_2 / big).min(1.0);
-                let next: FarEnds = std::array::from_fn(|i| lx[i] + damp * d[i]);
-                if next[0].exp() < LAYER_MIN || next[3].exp() < LAYER_MIN {
-                    return Err(Error::NoConvergence(format!(
-                        "exact corner (far layer): a layer vanishes (a step to 1 + e2 = {:e}, \
-                         1 - d2 = {:e}, below {LAYER_MIN:e})",
-                        next[0].exp(),
-                        next[3].exp()
-                    )));
-                }
-                Ok((next, big))
-            },
-        )?;
-        lx = next;
-        if restarts == RESTARTS && step > RESTART_ABOVE {
-            return Err(Error::NoConvergence(format!(
-                "exact corner (far layer): the chord method still takes relative steps of \
-                 {step:e} after {RESTARTS} restarts (ends {:?})",
-                lx.map(f64::exp)
-            )));
-        }
-        if step <= tol.max(RESTART_ABOVE) || restarts == RESTARTS {
-            return Ok(FarLevel {
-                x: lx.map(f64::exp),
-                state,
-                step,
-                solves,
-            });
-        }
-        restarts += 1;
-        *jac = None;
-    }
+    layered_level(x0, tol, jac, "far layer", &[0, 3], |x| {
+        far_fixed(m, x, qp, level)
+    })
 }
