@@ -1136,7 +1136,7 @@ fn table_edge(k: &Coupling) -> Option<(StickEdge, f64)> {
 /// ([`large_friction`]): measured with the panels at b* = 0.2, lc = 20.8700297 (mu~ = 500,
 /// the table's top 637), 20.8778522 (1e3), 20.8817410 (2e3), 20.8836819 (4e3), differences
 /// 7.82e-3, 3.89e-3, 1.94e-3 in the ratio 2.01, 2.003 of the leading 1/mu~ term, and c moving
-/// by 1.7e-11 in all (1 - c = 8.63e-10 .. 8.52e-10). The strips below b* = 0.16 end at fixed
+/// by 1.2e-11 in all (1 - c = 8.63e-10 .. 8.52e-10). The strips below b* = 0.16 end at fixed
 /// zeta where g is 0.2 and more (b* = 0.16, zeta = 6.6: mu~ = 7.2, g = 0.23), far from that
 /// expansion; the near-bonded law answers c alone above them.
 const TOP_NODE_G: f64 = 0.01;
