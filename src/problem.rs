@@ -115,6 +115,11 @@ impl StickEdge {
         }
     }
 
+    /// lc = ln(c / (1 - c)), the inverse of [`StickEdge::from_logit`].
+    pub fn logit(&self) -> f64 {
+        self.c.ln() - self.one_minus_c.ln()
+    }
+
     /// |c - other.c|, from the slip widths when both edges lie above 1/2 (no cancellation
     /// near full stick), else from c.
     pub fn distance(&self, other: StickEdge) -> f64 {

@@ -151,11 +151,7 @@ fn solve_all(
         let e = guess.as_ref().map_err(|e| e.clone())?;
         let s = solve_at(beta, zeta, solver, e.c.min(e.one_minus_c) * rel)?;
         let e = s.edge();
-        Ok((
-            e.c.ln() - e.one_minus_c.ln(),
-            e.c * e.one_minus_c,
-            s.numerical_error(),
-        ))
+        Ok((e.logit(), e.c * e.one_minus_c, s.numerical_error()))
     })
 }
 

@@ -151,7 +151,7 @@ const WINDOW: f64 = 0.05;
 pub(crate) fn solve(k: &Coupling, tol: f64, traction_tol: f64) -> Result<CoupledSolution> {
     let (r, _) = k.reduced();
     let (edge, error) = extrapolated_edge(&r, tol, traction_tol)?;
-    let lc = edge.c.ln() - edge.one_minus_c.ln();
+    let lc = edge.logit();
     let search = panels_in_window(k, tol, traction_tol, (lc - WINDOW, lc + WINDOW))
         .filter(|s| (s.edge.c - edge.c).abs() <= s.error + error);
     if let Some(s) = &search

@@ -392,7 +392,7 @@ fn edge_of(lc: f64) -> (f64, f64) {
 /// lc = ln(c / (1 - c)), clamped to the range the scan works in.
 fn goodman_guess(bq: f64, mu: f64) -> f64 {
     let e = crate::goodman::stick_edge(bq / mu);
-    (e.c.ln() - e.one_minus_c.ln()).clamp(GUESS_RANGE.0, GUESS_RANGE.1)
+    e.logit().clamp(GUESS_RANGE.0, GUESS_RANGE.1)
 }
 
 /// Root finder state for one polynomial order per panel.
@@ -943,7 +943,7 @@ fn spectral_from(
             .or_else(|| {
                 // below the table's smallest b*, the weak-coupling law's edge
                 let (e, bound) = weak_coupling::applies(r.bp).then(|| table_edge(k))??;
-                Some((e.c.ln() - e.one_minus_c.ln(), bound))
+                Some((e.logit(), bound))
             })
             .filter(|&(lc, _)| known_edge_serves_tractions(r.bp, StickEdge::from_logit(lc)))
     } else {
@@ -957,7 +957,7 @@ fn spectral_from(
             // outside the table (below b* = 0.25 above its strips' tops there,
             // [`crate::stick_edge_table`]): from the best guess of the stick edge
             let e = guessed_edge(k, &r)?;
-            let lc0 = e.c.ln() - e.one_minus_c.ln();
+            let lc0 = e.logit();
             crate::spectral::from_guess(consts, lc0, tol, traction_tol, delta)?
         }
     };

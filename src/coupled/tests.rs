@@ -1253,7 +1253,7 @@ fn spectral_agrees_with_the_panels_below_the_table_edge_on_a_grid() {
                 // the bases serve (2.5e-13), and the panels take seconds there
                 break;
             }
-            let lc = p.edge().c.ln() - p.edge().one_minus_c.ln();
+            let lc = p.edge().logit();
             // served from the guessed start (stick zones below `spectral::GUESS_C_MIN` are
             // served from the table's edge alone, checked by
             // `spectral_agrees_with_the_panels_at_small_stick_zones`)

@@ -40,11 +40,6 @@ pub(crate) struct Node {
     pub(crate) goodman: StickEdge,
 }
 
-/// lc = ln(c / (1 - c)) of a stick edge.
-fn logit(e: StickEdge) -> f64 {
-    e.c.ln() - e.one_minus_c.ln()
-}
-
 /// The stick edge at b* (below [`NODE_B`]) whose Goodman edge at the same zeta is `goodman`,
 /// from the `nodes` at [`NODE_B`], and its error (module documentation).
 pub(crate) fn extrapolate(b: f64, goodman: StickEdge, nodes: [Node; 3]) -> (StickEdge, f64) {
@@ -52,7 +47,7 @@ pub(crate) fn extrapolate(b: f64, goodman: StickEdge, nodes: [Node; 3]) -> (Stic
     let quad = lagrange(b * b, y);
     let line = lagrange(b * b, [y[0], y[1], None]);
     let h: [f64; 3] = std::array::from_fn(|i| {
-        (logit(nodes[i].table) - logit(nodes[i].goodman)) / (NODE_B[i] * NODE_B[i])
+        (nodes[i].table.logit() - nodes[i].goodman.logit()) / (NODE_B[i] * NODE_B[i])
     });
     // a node's bound on |dc| in h: over c (1 - c) b_i^2
     let h_error: [f64; 3] = std::array::from_fn(|i| {
@@ -61,7 +56,7 @@ pub(crate) fn extrapolate(b: f64, goodman: StickEdge, nodes: [Node; 3]) -> (Stic
     });
     let dot = |w: [f64; 3], v: [f64; 3]| -> f64 { w.iter().zip(v).map(|(a, b)| a * b).sum() };
     let (h_quad, h_line) = (dot(quad, h), dot(line, h));
-    let edge = StickEdge::from_logit(logit(goodman) + b * b * h_quad);
+    let edge = StickEdge::from_logit(goodman.logit() + b * b * h_quad);
     let lc_error = b * b * (dot(quad.map(f64::abs), h_error) + (h_quad - h_line).abs());
     // |dc| <= c (1 - c) |d lc| to first order; the larger c (1 - c) of the edge moved by it
     let spread = edge.c * edge.one_minus_c * lc_error.exp();

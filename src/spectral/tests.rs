@@ -334,7 +334,7 @@ fn measure_sigma_noise_in_thin_slip_zones() {
             let k = crate::problem::Coupling { bp: b, bq: b, mu };
             let s = crate::coupled::solve_panels_to(&k, 1e-12, f64::INFINITY).unwrap();
             let e = s.edge();
-            (e.c.ln() - e.one_minus_c.ln(), s.numerical_error())
+            (e.logit(), s.numerical_error())
         });
         let k = consts(b, mu);
         let e = StickEdge::from_logit(lc);
