@@ -203,13 +203,13 @@ impl Frame {
             let bonded = match s.kind {
                 Kind::Corner(n) => {
                     assert!(i == 0, "a corner zone lies at x = -1");
-                    let b = Bonded::new((k.bp * k.bq).sqrt(), 1.0 - len, len, MAX_DEGREE);
+                    let b = Bonded::new(k.b_star(), 1.0 - len, len, MAX_DEGREE);
                     assert!(n <= b.powers(), "at most {} bonded powers", b.powers());
                     Some(b)
                 }
                 Kind::FarCorner(n) => {
                     assert!(i + 1 == nz, "a far corner zone lies at x = +1");
-                    let b = Bonded::new((k.bp * k.bq).sqrt(), 1.0 - len, len, MAX_DEGREE);
+                    let b = Bonded::new(k.b_star(), 1.0 - len, len, MAX_DEGREE);
                     assert!(n <= b.powers(), "at most {} bonded powers", b.powers());
                     Some(b)
                 }
@@ -408,21 +408,9 @@ impl Frame {
             b.values(t, buf, &mut qv[at..at + n]);
             at += n;
         }
-        if let Kind::Corner(np) = z.kind {
-            // (u / len)^(beta + j), u = 1 + x = the offset from the zone's lower end -1
-            let beta = C64::new(-0.5, self.eps());
-            let s = l.from_lo / z.len;
-            let mut f = (beta * s.ln()).exp();
-            for _ in 0..np {
-                self.bonded_pair(f, f, &mut pv[at..at + 2], &mut qv[at..at + 2]);
-                f *= s;
-                at += 2;
-            }
-        }
-        if let Kind::FarCorner(np) = z.kind {
-            // (v / len)^(a + j), v = 1 - x = the offset from the zone's upper end +1
-            let a = C64::new(-0.5, -self.eps());
-            let s = l.to_hi / z.len;
+        if let Some((np, a, far)) = self.corner_powers(z.kind) {
+            // (u / len)^(a + j), u the offset from the zone's end at -1 (1 + x) or +1 (1 - x)
+            let s = if far { l.to_hi } else { l.from_lo } / z.len;
             let mut f = (a * s.ln()).exp();
             for _ in 0..np {
                 self.bonded_pair(f, f, &mut pv[at..at + 2], &mut qv[at..at + 2]);
@@ -434,7 +422,18 @@ impl Frame {
 
     /// eps = artanh(b*) / pi, b* = sqrt(bp bq), of the bonded field.
     fn eps(&self) -> f64 {
-        (self.k.bp * self.k.bq).sqrt().atanh() / std::f64::consts::PI
+        self.k.b_star().atanh() / std::f64::consts::PI
+    }
+
+    /// A corner zone's bonded powers (-1 + x)^(beta + j) or (1 - x)^(a + j): their count,
+    /// their exponent beta = -1/2 + i eps at x = -1 ([`Kind::Corner`]) or a = conj(beta) at
+    /// x = +1 ([`Kind::FarCorner`]), and whether they sit at +1.
+    fn corner_powers(&self, kind: Kind) -> Option<(usize, C64, bool)> {
+        match kind {
+            Kind::Corner(n) => Some((n, C64::new(-0.5, self.eps()), false)),
+            Kind::FarCorner(n) => Some((n, C64::new(-0.5, -self.eps()), true)),
+            _ => None,
+        }
     }
 
     /// The two real columns of a complex power phi of dp + i dq / delta (A = 1 and A = i),
@@ -480,33 +479,22 @@ impl Frame {
                 }
                 at += n;
             }
-            if let (Kind::Corner(np), Some(bx)) = (z.kind, &z.bonded) {
-                // H over [-1, -1 + len] of (1 + x)^(beta + m) at y is
-                // -conj(H over [1 - len, 1] of (1 - s)^(a + m) at -y), a = conj(beta)
-                // (the reflection s = -x); with 1 - (-y) = x - lo and c - (-y) = -(hi - x)
+            if let (Some((np, a, far)), Some(bx)) = (self.corner_powers(z.kind), &z.bonded) {
+                // H over [1 - len, 1] of (1 - s)^(a + m): at +1 on the powers' own interval
+                // (1 - y = hi - x, c - y = -(x - lo)); at -1, H over [-1, -1 + len] of
+                // (1 + x)^(beta + m) at y is -conj of it at -y, a = conj(beta) (the
+                // reflection s = -x; 1 - (-y) = x - lo, c - (-y) = -(hi - x))
                 let (xlo, hix) = self.rel(l, j);
                 let mut h = vec![C64::new(0.0, 0.0); np];
-                bx.end_powers(xlo, -hix, &mut h);
-                // divided by len^(beta + m) = conj(len^(a + m))
-                let beta = C64::new(-0.5, self.eps());
-                let mut scale = (-beta * z.len.ln()).exp();
-                for hm in h.iter().take(np) {
-                    let v = -hm.conj() * scale;
-                    self.bonded_pair(v, v, &mut hp[at..at + 2], &mut hq[at..at + 2]);
-                    scale /= z.len;
-                    at += 2;
+                if far {
+                    bx.end_powers(hix, -xlo, &mut h);
+                } else {
+                    bx.end_powers(xlo, -hix, &mut h);
                 }
-            }
-            if let (Kind::FarCorner(np), Some(bx)) = (z.kind, &z.bonded) {
-                // the powers' own interval [1 - len, 1]: 1 - y = hi - x, c - y = -(x - lo)
-                let (xlo, hix) = self.rel(l, j);
-                let mut h = vec![C64::new(0.0, 0.0); np];
-                bx.end_powers(hix, -xlo, &mut h);
-                // divided by len^(a + m)
-                let a = C64::new(-0.5, -self.eps());
+                // divided by len^(exponent + m)
                 let mut scale = (-a * z.len.ln()).exp();
                 for hm in h.iter().take(np) {
-                    let v = *hm * scale;
+                    let v = if far { *hm * scale } else { -hm.conj() * scale };
                     self.bonded_pair(v, v, &mut hp[at..at + 2], &mut hq[at..at + 2]);
                     scale /= z.len;
                     at += 2;
@@ -539,21 +527,8 @@ impl Frame {
                 }
                 at += n;
             }
-            if let Kind::Corner(np) = z.kind {
-                // int over the zone of (u / len)^(beta + m) = len / (beta + m + 1)
-                let beta = C64::new(-0.5, self.eps());
-                for m in 0..np {
-                    let v = (beta + (m + 1) as f64).inv() * z.len;
-                    let (mut p2, mut q2) = ([0.0; 2], [0.0; 2]);
-                    self.bonded_pair(v, v, &mut p2, &mut q2);
-                    ip[at..at + 2].copy_from_slice(&p2);
-                    iq[at..at + 2].copy_from_slice(&q2);
-                    at += 2;
-                }
-            }
-            if let Kind::FarCorner(np) = z.kind {
-                // int over the zone of (v / len)^(a + m) = len / (a + m + 1)
-                let a = C64::new(-0.5, -self.eps());
+            if let Some((np, a, _)) = self.corner_powers(z.kind) {
+                // int over the zone of (u / len)^(a + m) = len / (a + m + 1)
                 for m in 0..np {
                     let v = (a + (m + 1) as f64).inv() * z.len;
                     let (mut p2, mut q2) = ([0.0; 2], [0.0; 2]);

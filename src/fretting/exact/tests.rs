@@ -405,7 +405,7 @@ fn local_exponents_hold() {
     for (fit, want) in fits {
         assert!((fit - want).abs() < 1e-3, "fitted {fit} against {want}");
     }
-    let b_star = (k.bp * k.bq).sqrt();
+    let b_star = k.b_star();
     let eps = b_star.atanh() / std::f64::consts::PI;
     let delta = (k.bq / k.bp).sqrt();
     let phase = |opx: f64| {

@@ -1443,7 +1443,7 @@ fn measure_second_unloading_data() {
     );
     let unloaded = &mirror.inner;
     let delta = (k.bq / k.bp).sqrt();
-    let eps = (k.bp * k.bq).sqrt().atanh() / std::f64::consts::PI;
+    let eps = k.b_star().atanh() / std::f64::consts::PI;
     for f in [0.5, 0.1, 1e-2, 1e-4, 1e-6, 1e-8, 1e-10] {
         let v = f * er;
         let (p, q) = r.tractions(2.0 - v, v);

@@ -610,7 +610,7 @@ fn corner_start(k: &Coupling, n: usize, q_star: f64, qp: f64) -> corner::Ends {
     } else {
         1.0 + 0.5 * (nodes[stuck - 1] + nodes[stuck])
     };
-    let b = (k.bp * k.bq).sqrt();
+    let b = k.b_star();
     let eps = b.atanh() / std::f64::consts::PI;
     [
         e2 * (-2.1 / eps).exp(),
@@ -1125,7 +1125,7 @@ fn outer_model_on_the_ply() {
         "q + mu p = {:.3e} mu p at 1 + x = {top:.3e}; first zero below at u0 = {u0:.4e}, \
          eps ln(e2/u0) = {:.4}",
         (q + k.mu * p) / (k.mu * p),
-        (k.bp * k.bq).sqrt().atanh() / std::f64::consts::PI * (e2 / u0).ln()
+        k.b_star().atanh() / std::f64::consts::PI * (e2 / u0).ln()
     );
     assert!(q + k.mu * p > 0.0 && u0 < 1e-15);
     for f in [1e-6, 1e-3, 0.1, 0.5, 0.9] {
