@@ -27,7 +27,7 @@ mod tests;
 use crate::numerics::quadrature::gauss_legendre_rule;
 use crate::problem::StickEdge;
 pub(crate) use system::Constants;
-use system::{Assembled, Fixed, Sizes, solve_fixed_pair};
+use system::{Assembled, Fixed, Sizes};
 
 /// Smallest edge exponent g the bases serve (large friction, g ~ 1/(pi b* mu~)). Measured on
 /// the grid of `coupled::tests::small_g_against_the_panels` (b* = 0.35 .. 0.99 in 8 rows, the
@@ -70,7 +70,33 @@ const G_MIN: f64 = 0.002;
 ///
 /// (one run each, wall times on the shared 2-core machine). Before, the rounded Z - tau
 /// put a noise of eps / (0.1 (1 - c)) into the stick poles' columns and no slip zone of
-/// 3e-9 or less answered. Below the thinnest measured the panels answer.
+/// 3e-9 or less answered.
+///
+/// Below 2.5e-13 (the limit before), measured the same way from the guessed edge at
+/// (1e-10, 1e-8), against the panels at (1e-11, 1e-10) (one run each, wall times on the
+/// shared machine; the ratio is the tractions' distance over the sum of both estimates; c
+/// always within the panels' estimate):
+///
+/// | b* | mu~ | 1 - c | level | spectral | panels | ratio |
+/// |---|---|---|---|---|---|---|
+/// | 0.03 | 0.3 | 4.5e-13 | 2 | 36 ms | 8.5 s | 0.09 |
+/// | 0.05 | 0.55 | 1.6e-13 | 2 | 62 ms | 10.1 s | 0.21 |
+/// | 0.14 | 10 | 8.8e-14 | 4 | 57 ms | 10.0 s | 0.22 |
+/// | 0.12 | 3 | 7.2e-14 | 3 | 63 ms | 21.7 s | 0.35 |
+/// | 0.1 | 1.8 | 3.0e-14 | 3 | 50 ms | 15.6 s | 0.14 |
+/// | 0.02 | 0.2154 | 2.7e-14 | 2 | 62 ms | 10.9 s | 0.34 |
+/// | 0.05 | 0.6 | 1.5e-14 | 3 | 55 ms | 11.8 s | 0.09 |
+/// | 0.12 | 3.8 | 1.4e-14 | 3 | 83 ms | 13.7 s | 0.18 |
+/// | 0.12 | 4.642 | 4.6e-15 | 3 | 91 ms | 24.4 s | 0.08 |
+/// | 0.1 | 2.154 | 3.2e-15 | 3 | 52 ms | 12.9 s | 0.38 |
+/// | 0.08 | 1.3 | 2.3e-15 | 4 | 100 ms | 18.9 s | 0.07 |
+/// | 0.12 | 6 | 1.5e-15 | 4 | 64 ms | 13.7 s | 0.08 |
+///
+/// Thinner ones (0.12, 10: 3.2e-16; 0.08, 1.6: 5.1e-17; 0.1, 4.642: 3.5e-18) found no level
+/// that met the estimates, and the panels answered. With the tractions to 1e-10 none of
+/// 1 - c = 1.1e-11 .. 3.2e-15 answered (the levels' tractions stayed 1e-11 .. 3e-10 apart
+/// over levels 2-10 at b* = 0.05, mu~ = 0.4642); the panels answer there. Below the thinnest
+/// measured the panels answer.
 ///
 /// The same limit holds down to g = [`G_MIN`] (the former rule g >= 0.03 below 1 - c = 1e-3
 /// is gone). Measured there (g = 0.0021 .. 0.03, mu~ = cot(pi g) / b*; c to 1e-10, tractions
@@ -95,7 +121,7 @@ const G_MIN: f64 = 0.002;
 /// tractions. The two unanswered points have g = 0.0021 (b* = 0.152 and 0.155): the search
 /// from Spence's stick edge gave up after 91-132 ms (the panels answer); from the panels' c,
 /// [`from_edge`] answered at level 8.
-const W_MIN: f64 = 2.5e-13;
+const W_MIN: f64 = 1.4e-15;
 
 /// Smallest stick zone the bases serve from the tabulated stick edge. Below c = 4e-5
 /// (`system::SMALL_STICK_BELOW`) the slip zone has one collocation point more per slip pole
@@ -181,7 +207,7 @@ const CONFIRM_BELOW: f64 = 1e-3;
 /// ([`crate::problem::traction_distance`]) of that level solved with its rows reversed, and
 /// the largest of four shuffles, from the rows as assembled, over the answer's estimate
 /// (one run; the last two rows answered at the table's edge as a pair of solutions,
-/// [`system::solve_fixed_pair`], and their frames are solved once):
+/// [`Assembled::solve_pair`], and their frames are solved once):
 ///
 /// | b*, mu~ | 1 - c | reversed | shuffles, largest |
 /// |---|---|---|---|
@@ -635,7 +661,7 @@ impl First {
 
 /// The tractions at the starting lc, whose c is within `bound` of the exact one: half levels
 /// from [`first_half_level`] on, each one assembly and one factorisation at lc that solve both
-/// the level and its coarser columns ([`system::solve_fixed_pair`]), until the level's
+/// the level and its coarser columns ([`Assembled::solve_pair`]), until the level's
 /// tractions agree with the coarser ones, or with the level below where that is nearer,
 /// within `traction_tol`, less what the distance from lc to the root moves them. Each level
 /// also checks the edge: the root its sigma points to, sigma / slope away, must lie within the
@@ -677,10 +703,22 @@ fn at_fixed_edge(
         // each level with its coarser columns on the same rows (one assembly and one
         // factorisation for both); the estimate is the distance to the nearer of those and
         // the level below
-        let (coarse, cur) = solve_fixed_pair(k, c, w, sizes).ok()?;
+        let system = Assembled::new(k, c, w, sizes);
+        let (coarse, cur) = system.solve_pair().ok()?;
         if !cur.sigma.is_finite() {
             return None;
         }
+        // a thin slip zone's rounding spread (as in [`rounding_spread`]): sigma's and the
+        // tractions' distance from the same system solved with its rows reversed
+        let rounding = if w < ROUNDING_BELOW {
+            let other = reversed_rows(&system)?;
+            Some((
+                (other.sigma - cur.sigma).abs(),
+                graded_distance(&other, &cur).parts,
+            ))
+        } else {
+            None
+        };
         if half == 2 * FIRST_LEVEL && first.base.is_none() {
             first.base = Some(Level {
                 lc,
@@ -689,12 +727,14 @@ fn at_fixed_edge(
         }
         // sigma's uncertainty: the larger of its differences from the coarser columns and
         // from the level below (both at lc)
-        let mut dsigma = (cur.sigma - coarse.sigma).abs();
-        let compared = distance(&cur, &coarse);
+        let mut dsigma = (cur.sigma - coarse.sigma)
+            .abs()
+            .max(rounding.map_or(0.0, |s| s.0));
+        let compared = level_distance(&cur, &coarse);
         let (mut dp, mut dq) = compared.parts;
         if let Some(b) = below.take() {
             dsigma = dsigma.max((cur.sigma - b.sigma).abs());
-            let (bp, bq) = distance(&cur, &b).parts;
+            let (bp, bq) = level_distance(&cur, &b).parts;
             if bp + delta * bq < dp + delta * dq {
                 (dp, dq) = (bp, bq);
             }
@@ -744,7 +784,8 @@ fn at_fixed_edge(
             // no level above takes the move below the tolerance
             return None;
         }
-        let parts = (SAFETY * dp + moved.0, SAFETY * dq + moved.1);
+        let (rp, rq) = rounding.map_or((0.0, 0.0), |s| s.1);
+        let parts = (SAFETY * (dp + rp) + moved.0, SAFETY * (dq + rq) + moved.1);
         if parts.0 + delta * parts.1 <= traction_tol && cur.residual <= traction_tol {
             match verdict(compared.noise, k.mu, traction_tol, delta, parts) {
                 Verdict::Answer(parts) => {
@@ -893,11 +934,7 @@ fn newton_ladder(
         }
         let distance_c = StickEdge::from_logit(root).distance(StickEdge::from_logit(prev_root));
         let mut error = SAFETY * (distance_c + c * w * (step.abs() + prev_step.abs()));
-        let compared = if w < CONFIRM_BELOW {
-            graded_distance(&cur, &prev)
-        } else {
-            distance(&cur, &prev)
-        };
+        let compared = level_distance(&cur, &prev);
         let (dp, dq) = compared.parts;
         let mut parts = (
             SAFETY * (dp + rate.0 * step.abs()),
@@ -993,17 +1030,21 @@ fn rounding_spread(
     slope: f64,
     rate: (f64, f64),
 ) -> Option<Spread> {
-    let order: Vec<usize> = (0..system.rows()).rev().collect();
-    let other = system.solve_rows(&order).ok()?;
-    if !other.sigma.is_finite() {
-        return None;
-    }
+    let other = reversed_rows(system)?;
     let dlc = (other.sigma - cur.sigma).abs() / slope.abs();
     let (dp, dq) = graded_distance(&other, cur).parts;
     Some(Spread {
         dlc,
         parts: (dp + rate.0 * dlc, dq + rate.1 * dlc),
     })
+}
+
+/// The system `system` solved with its rows in reverse order (None where that fails or sigma
+/// is not finite): the same least squares in another rounding.
+fn reversed_rows(system: &Assembled) -> Option<Fixed> {
+    let order: Vec<usize> = (0..system.rows()).rev().collect();
+    let other = system.solve_rows(&order).ok()?;
+    other.sigma.is_finite().then_some(other)
 }
 
 /// What a level that meets its estimates answers.
@@ -1125,6 +1166,17 @@ fn distance(a: &Fixed, b: &Fixed) -> Compared {
     Compared {
         parts: (2.0 * dp, 2.0 * dq),
         noise: check.noise,
+    }
+}
+
+/// The distance between a level `a` and another solution `b` as the estimates take it:
+/// [`graded_distance`] where `a`'s slip zone is thinner than [`CONFIRM_BELOW`], else
+/// [`distance`].
+fn level_distance(a: &Fixed, b: &Fixed) -> Compared {
+    if a.basis.w < CONFIRM_BELOW {
+        graded_distance(a, b)
+    } else {
+        distance(a, b)
     }
 }
 

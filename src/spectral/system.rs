@@ -409,7 +409,7 @@ impl Basis {
         }
     }
 
-    /// The columns of the coarser system of [`solve_fixed_pair`]: each block less its
+    /// The columns of the coarser system of [`Assembled::solve_pair`]: each block less its
     /// highest polynomial degree and one pole (its second nearest), the bonded columns kept.
     ///
     /// The coarser solution's distance from the finer one is the finer one's error estimate
@@ -763,7 +763,7 @@ fn slip_columns_per_decade(c: f64, w: f64, sizes: Sizes) -> f64 {
 /// The solution of the fixed-c system.
 #[derive(Clone, Debug)]
 pub(crate) struct Fixed {
-    /// Shared by the solutions of one assembly ([`solve_fixed_pair`]).
+    /// Shared by the solutions of one assembly ([`Assembled::solve_pair`]).
     pub(crate) basis: Arc<Basis>,
     /// The coefficients of the basis columns.
     pub(crate) coef: Vec<f64>,
@@ -771,20 +771,8 @@ pub(crate) struct Fixed {
     pub(crate) sigma: f64,
     /// The largest residual of (E1) and (E2) at the collocation points, relative to the
     /// smallest term of the equation there (R1); infinite for the coarser solution of a
-    /// pair ([`solve_fixed_pair`]), whose residual no test reads.
+    /// pair ([`Assembled::solve_pair`]), whose residual no test reads.
     pub(crate) residual: f64,
-}
-
-/// The fixed-c system at `sizes` and, from the same rows and the same factorisation, the
-/// system of a subset of its columns ([`Basis::coarse_columns`]): the coarser solution and
-/// the finer one, whose distance estimates the finer one's error.
-pub(crate) fn solve_fixed_pair(
-    k: Constants,
-    c: f64,
-    w: f64,
-    sizes: Sizes,
-) -> Result<(Fixed, Fixed)> {
-    Assembled::new(k, c, w, sizes).solve_pair()
 }
 
 /// The weighted collocation rows of the fixed-c system with their column scales, and the
@@ -942,9 +930,10 @@ impl Assembled {
         self.solve_matrix(&self.a.rows_permuted(order))
     }
 
-    /// The solutions on the coarser columns ([`Basis::coarse_columns`]) and on all, from one
-    /// factorisation (coarser, finer).
-    fn solve_pair(&self) -> Result<(Fixed, Fixed)> {
+    /// The solutions on the coarser columns ([`Basis::coarse_columns`]) and on all, from the
+    /// same rows and one factorisation (coarser, finer): the finer one with the distance
+    /// that estimates its error.
+    pub(crate) fn solve_pair(&self) -> Result<(Fixed, Fixed)> {
         let n = self.basis.len();
         let cols = n + 1;
         let keep = self.basis.coarse_columns();
@@ -1048,7 +1037,7 @@ impl Fixed {
 
     /// This solution's (p, q) with their noise, and `other`'s (p, q), each at its own point
     /// `at(solution)`, the columns' values in the reusable buffer `work`: evaluated once
-    /// where both come from one assembly ([`solve_fixed_pair`]), whose point is this one's.
+    /// where both come from one assembly ([`Assembled::solve_pair`]), whose point is this one's.
     pub(crate) fn probe_both(
         &self,
         other: &Fixed,
