@@ -420,3 +420,26 @@ fn weak_coupling_in_a_thin_slip_zone() {
     let panels = coupled::solve(&k, 1e-12).unwrap();
     table_agrees(&k, &panels, "b* = 0.01, zeta = 4.8");
 }
+
+/// [`weak_coupling_from_the_table`]'s tractions in thin slip zones (b* = 0.005, 1 - c =
+/// 1.0e-7, tractions to 1e-10; b* = 0.01, 1 - c = 1.0e-9, tractions to 1e-8): the spectral
+/// solver from the weak-coupling law's edge answers, within the two estimates of the panels'
+/// root search at the same tolerances (`coupled::known_edge_starts_spectral`).
+#[test]
+fn weak_coupling_tractions_in_thin_slip_zones() {
+    for (b, mu, ttol) in [(0.005, 0.0289623, 1e-10), (0.01, 0.0725833, 1e-8)] {
+        let k = Coupling { bp: b, bq: b, mu };
+        let s = coupled::solve_to(&k, 1e-10, ttol).unwrap();
+        assert_eq!(s.regime(), "spectral", "b* {b}");
+        assert!(s.traction_error() <= ttol && s.numerical_error() <= 1e-10);
+        let panels = coupled::solve_panels_to(&k, 1e-11, ttol).unwrap();
+        let dt = traction_distance(&s, &panels);
+        let both = s.traction_error() + panels.traction_error();
+        eprintln!(
+            "b* {b} mu~ {mu}: 1 - c {:.3e}, tractions {dt:.2e} apart ({both:.2e})",
+            s.edge().one_minus_c
+        );
+        assert!(dt <= both, "b* {b}: tractions {dt:e} apart ({both:e})");
+        assert!(s.edge().distance(panels.edge()) <= s.numerical_error() + panels.numerical_error());
+    }
+}
