@@ -443,3 +443,29 @@ fn weak_coupling_tractions_in_thin_slip_zones() {
         assert!(s.edge().distance(panels.edge()) <= s.numerical_error() + panels.numerical_error());
     }
 }
+
+/// [`weak_coupling_from_the_table`]'s tractions at the smallest b* (b* = 1e-4 and 3.756e-4,
+/// zeta = 2.06, c = 0.13, where b mu ~ 1e-8 and the rows' rounding alone had kept the
+/// equations' residual (R1) above 1e-8): the spectral solver answers, within the two
+/// estimates of the panels' root search, at tractions to 1e-8 and 1e-10.
+#[test]
+fn weak_coupling_tractions_at_the_smallest_b() {
+    for b in [1e-4, 3.756e-4] {
+        let (b, mu) = coupling_at(f64::atanh(b), 2.06);
+        let k = Coupling { bp: b, bq: b, mu };
+        for ttol in [1e-8, 1e-10] {
+            let s = coupled::solve_to(&k, 1e-10, ttol).unwrap();
+            assert_eq!(s.regime(), "spectral", "b* {b}, {ttol:e}");
+            assert!(s.traction_error() <= ttol && s.numerical_error() <= 1e-10);
+            let panels = coupled::solve_panels_to(&k, 1e-11, ttol).unwrap();
+            let dt = traction_distance(&s, &panels);
+            let both = s.traction_error() + panels.traction_error();
+            assert!(
+                dt <= both,
+                "b* {b}, {ttol:e}: tractions {dt:e} apart ({both:e})"
+            );
+            let dc = s.edge().distance(panels.edge());
+            assert!(dc <= s.numerical_error() + panels.numerical_error());
+        }
+    }
+}
