@@ -43,16 +43,7 @@ impl Method {
 /// Default target for |c - c_exact| (and, unless set apart, for the traction error).
 pub const DEFAULT_TOLERANCE: f64 = 1e-8;
 
-/// The smallest tolerance (on c and on the tractions) COUPLED and LCP are run to: a smaller
-/// one is accepted, the solver works to this floor and the solve fails with
-/// [`Error::ToleranceNotMet`] naming it unless the estimates happen to meet what was asked
-/// (exact limits: mu = 0, bp = 0). The panels re-run themselves down to a tolerance of 1e-12
-/// on c and no further, and below it the cost grows with no answer: the scene of hostile
-/// draw 843 (plane stress 16.44, 2633.6, 2.957, -0.0678, mu = 1.43e7) took 30 s at 1e-10
-/// and at 1e-12 (met: traction estimate 3.1e-13), 150 s at 1e-13 and 305 s at 1e-16 (both
-/// missed at 3.1e-13; issue 26 reports solves of 482-2616 s at 1e-100 and 5e-324); the
-/// carbon/epoxy ply at mu = 0.3 meets 1e-13 and misses 1e-14 (estimate 1.3e-14) after 3.5 s.
-pub const TOLERANCE_FLOOR: f64 = 1e-12;
+pub use crate::problem::TOLERANCE_FLOOR;
 
 /// An a-priori bound on the traction error norm ([`crate::problem::traction_distance`]) of
 /// any admissible tractions of friction `mu` (p >= 0 with int p = 1 and |q| <= mu p, as the

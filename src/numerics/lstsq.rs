@@ -129,19 +129,29 @@ impl ColMajor {
         m
     }
 
-    /// A x and |A| |x|, each entry summed over the columns in order: the computed A x lies
-    /// within gamma_n (|A| |x|) of the exact product of the stored A and x (n = `cols`,
-    /// gamma_n = n eps / (1 - n eps), the bound of a recursive sum of products).
-    pub(crate) fn times_with_abs(&self, x: &[f64]) -> (Vec<f64>, Vec<f64>) {
+    /// A x, each entry summed over the columns in order: the computed entry i lies within
+    /// gamma_n (|A| |x|)_i of the exact product of the stored A and x (n = `cols`,
+    /// gamma_n = n eps / (1 - n eps), the bound of a recursive sum of products;
+    /// [`ColMajor::abs_times`]).
+    pub(crate) fn times(&self, x: &[f64]) -> Vec<f64> {
         let mut out = vec![0.0; self.rows];
-        let mut abs = vec![0.0; self.rows];
         for (j, &xj) in x.iter().enumerate().take(self.cols) {
-            for ((o, s), a) in out.iter_mut().zip(abs.iter_mut()).zip(self.col(j)) {
+            for (o, a) in out.iter_mut().zip(self.col(j)) {
                 *o += a * xj;
-                *s += (a * xj).abs();
             }
         }
-        (out, abs)
+        out
+    }
+
+    /// |A| |x|: each row's sum of |a_ij x_j| over the columns, its rounding scale in A x.
+    pub(crate) fn abs_times(&self, x: &[f64]) -> Vec<f64> {
+        let mut out = vec![0.0; self.rows];
+        for (j, &xj) in x.iter().enumerate().take(self.cols) {
+            for (o, a) in out.iter_mut().zip(self.col(j)) {
+                *o += (a * xj).abs();
+            }
+        }
+        out
     }
 }
 

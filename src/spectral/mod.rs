@@ -703,21 +703,25 @@ fn at_fixed_edge(
         // each level with its coarser columns on the same rows (one assembly and one
         // factorisation for both); the estimate is the distance to the nearer of those and
         // the level below
-        let system = Assembled::new(k, c, w, sizes);
-        let (coarse, cur) = system.solve_pair().ok()?;
-        if !cur.sigma.is_finite() {
-            return None;
-        }
-        // a thin slip zone's rounding spread (as in [`rounding_spread`]): sigma's and the
-        // tractions' distance from the same system solved with its rows reversed
-        let rounding = if w < ROUNDING_BELOW {
-            let other = reversed_rows(&system)?;
-            Some((
-                (other.sigma - cur.sigma).abs(),
-                graded_distance(&other, &cur).parts,
-            ))
-        } else {
-            None
+        // (the assembled system is kept only as long as the rounding check needs it)
+        let (coarse, cur, rounding) = {
+            let system = Assembled::new(k, c, w, sizes);
+            let (coarse, cur) = system.solve_pair().ok()?;
+            if !cur.sigma.is_finite() {
+                return None;
+            }
+            // a thin slip zone's rounding spread (as in [`rounding_spread`]): sigma's and
+            // the tractions' distance from the same system solved with its rows reversed
+            let rounding = if w < ROUNDING_BELOW {
+                let other = reversed_rows(&system)?;
+                Some((
+                    (other.sigma - cur.sigma).abs(),
+                    graded_distance(&other, &cur).parts,
+                ))
+            } else {
+                None
+            };
+            (coarse, cur, rounding)
         };
         if half == 2 * FIRST_LEVEL && first.base.is_none() {
             first.base = Some(Level {

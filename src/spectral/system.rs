@@ -15,6 +15,7 @@
 use crate::error::{Error, Result};
 use crate::numerics::jacobi_transform::{JacobiFamily, Point};
 use crate::numerics::lstsq::{ColMajor, ConstrainedFailure, constrained_nested, constrained_sized};
+use crate::problem::TOLERANCE_FLOOR;
 
 use crate::numerics::bonded::{Bonded, MAX_DEGREE};
 use faer::complex::Complex;
@@ -998,7 +999,7 @@ impl Assembled {
     /// `coef`: each row's residual relative to the smallest term of its equation, b mu p in
     /// (E1) (|q| <= mu p) and b p in (E2), in the rows' weights; the largest. A row whose
     /// computed residual lies within the rounding of its own sum, gamma_n (|A| |x|) for the
-    /// row ([`ColMajor::times_with_abs`]), counts as 0: the coefficients solve it exactly
+    /// row ([`ColMajor::abs_times`]), counts as 0: the coefficients solve it exactly
     /// with its entries perturbed by gamma_n relative (a componentwise backward error at the
     /// rounding), and the rounding of the tractions themselves is in the estimate ((R2)).
     /// Where b mu is small the smallest term is tiny against the columns' own sizes: at
@@ -1014,11 +1015,26 @@ impl Assembled {
     /// 0.79 and 0.34 in the tractions, 0.25 in c). The 48 answers of the speed scenes are
     /// bit-identical.
     fn residual(&self, full: &[f64], coef: &[f64]) -> f64 {
-        let k = self.basis.k;
-        let n = self.basis.len();
-        let (rows, sums) = self.a.times_with_abs(full);
+        let rows = self.a.times(full);
+        let largest = self.largest_ratio(&rows, coef, None);
+        // the rows' rounding scales only where the largest exceeds the smallest tolerance
+        // the library works to (below it the check passes at every tolerance, and the
+        // scales cost another product with A)
+        if largest <= TOLERANCE_FLOOR {
+            return largest;
+        }
         let nf = full.len() as f64;
         let gamma = nf * f64::EPSILON / (1.0 - nf * f64::EPSILON);
+        let scales: Vec<f64> = self.a.abs_times(full).iter().map(|s| gamma * s).collect();
+        self.largest_ratio(&rows, coef, Some(&scales))
+    }
+
+    /// The largest of the rows' residuals `rows` relative to their equations' smallest terms
+    /// ([`Assembled::residual`]), leaving out the rows within `rounding` where given (a NaN
+    /// ratio, from a vanishing term, is not counted).
+    fn largest_ratio(&self, rows: &[f64], coef: &[f64], rounding: Option<&[f64]>) -> f64 {
+        let k = self.basis.k;
+        let n = self.basis.len();
         let mut residual: f64 = 0.0;
         let mut r = 0;
         for (i, &stick_point) in self.on_stick.iter().enumerate() {
@@ -1030,7 +1046,7 @@ impl Assembled {
             let size = k.b * p * self.weights[i];
             for (eq, scale) in [(true, k.mu), (stick_point, 1.0)] {
                 if eq {
-                    if rows[r].abs() > gamma * sums[r] {
+                    if rounding.is_none_or(|s| rows[r].abs() > s[r]) {
                         residual = residual.max(rows[r].abs() / (scale * size));
                     }
                     r += 1;
