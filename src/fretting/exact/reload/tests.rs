@@ -996,6 +996,7 @@ fn outer_model_on_the_ply_reloading_step() {
             wa: o.x[1],
             w2: Some(o.x[2]),
             layer: Some(o.x[0]),
+            far: None,
             state: o.state,
             step: o.step,
             solves: o.solves,
