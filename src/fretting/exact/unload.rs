@@ -1416,7 +1416,15 @@ impl<D: Start + ?Sized> Unloading<D> {
                 return 0.0;
             }
             // the data's kinks inside the trailing zone (the reloaded state's layer top,
-            // section 24) cut the rule, in 1 - x
+            // section 24) cut the rule, in 1 - x; a node whose slope is not finite is one that
+            // the frame places onto a zone end (the far layer's top d2 is held in 1 + x, whose
+            // ulp 2.2e-16 exceeds the rule's nodes nearest d2 when 1 - d2 < 1e-10, section
+            // 25), where the zones' H[q] is NaN: left out, as in [`graded`] (its weight below
+            // 1.4e-13 of the piece, the slope bounded there)
+            let slope = |r: f64| {
+                let v = self.slip_slope(2.0 - r, r);
+                if v.is_finite() { v } else { 0.0 }
+            };
             let piecewise = |lo: f64, hi: f64| {
                 let mut cuts = vec![lo, hi];
                 for c in self.loaded.kinks() {
@@ -1427,7 +1435,7 @@ impl<D: Start + ?Sized> Unloading<D> {
                 }
                 cuts.sort_by(f64::total_cmp);
                 cuts.windows(2)
-                    .map(|w| graded(w[0], w[1], &|r| self.slip_slope(2.0 - r, r)))
+                    .map(|w| graded(w[0], w[1], &slope))
                     .sum::<f64>()
             };
             if self.level.far.is_some() && omx - wd < w2 - omx {
