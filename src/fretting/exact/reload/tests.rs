@@ -1940,7 +1940,7 @@ fn measure_routed_second_unloading() {
 /// the answer is admissible (both slips' signs, both layers' margins), and int p = 1,
 /// int q = Q/P by the independent quadrature.
 #[test]
-#[ignore = "slow: about 4-6 min on the shared machine, the ply's data (40-110 s) and three routed loads"]
+#[ignore = "slow: about 5 min (296 s in one run), the ply's data (40-110 s) and three routed loads"]
 fn routed_second_unloading_against_the_march() {
     use super::super::unload::unload_from;
     let k = ply();
