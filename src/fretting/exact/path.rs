@@ -202,6 +202,19 @@ impl ExactPath {
                         data_traction_error: *data_traction_error,
                     }
                 } else {
+                    if u.level.layer.is_some() {
+                        // `unload` takes the reloaded state's layer at +1 as data (the second
+                        // unloading, docs/theory_tangential.md section 25), but the path's
+                        // getters, dissipation and data estimates do not read a far layer yet
+                        return Err(refused(
+                            &what,
+                            Error::InvalidArgument(
+                                "a reversal from a state with the corner's stuck layer is not \
+                                 on the exact path yet"
+                                    .into(),
+                            ),
+                        ));
+                    }
                     let inner: Arc<dyn Start> = u.clone();
                     let data: Arc<dyn Start> = Arc::new(Mirror { inner });
                     match self.full_stick(&*data, !*flip, -t, qp) {

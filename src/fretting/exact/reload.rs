@@ -24,8 +24,9 @@
 //! [`unload`] answers with the corner's outer model (section 20: a layer stuck since Q** at
 //! +1, the zone (b2, 1 - layer) slipping in -x, the zone at -1), marched from Q** by
 //! `outer_cold` and checked and estimated as the first unloading's (section 21). On the ply
-//! the layer persists up to +Q* (section 23), so a reversal from the reloaded state is
-//! refused (its data would carry the layer, `corner_layer`).
+//! the layer persists up to +Q* (section 23); the reloaded state with it is the data of the
+//! second unloading, which [`unload`] answers with the outer model with a far layer
+//! (`Start::far_layer`, sections 24-25).
 
 #[cfg(test)]
 pub(crate) mod tests;
@@ -117,8 +118,11 @@ impl Start for Reloading {
         Start::loaded_edge_at_corner(&self.mirrored)
     }
     /// A reloading answered by the corner's outer model has its layer at +1 in the contact's
-    /// frame: the next branch would need it as data, which no branch carries yet.
-    fn corner_layer(&self) -> bool {
-        Start::corner_layer(&self.mirrored)
+    /// frame: the second unloading's data (docs/theory_tangential.md sections 24-25).
+    fn near_layer(&self) -> Option<f64> {
+        Start::far_layer(&self.mirrored)
+    }
+    fn far_layer(&self) -> Option<f64> {
+        Start::near_layer(&self.mirrored)
     }
 }

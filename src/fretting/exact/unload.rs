@@ -29,7 +29,10 @@
 //! the outer model's branch from an answer of it and hands over to the three-zone pattern
 //! where the layer vanishes. The same route answers the reloading (the unloading of the
 //! mirrored unloaded state, [`Mirror`]), whose mirrored corner is the unloaded trailing zone
-//! ((O1) with w = 1 - a2**, docs/theory_tangential.md sections 22-23).
+//! ((O1) with w = 1 - a2**, docs/theory_tangential.md sections 22-23). Data with a layer
+//! stuck at +1 (the reloaded state, `Start::far_layer`) is the second unloading's: [`unload`]
+//! answers it with the outer model with a far layer ([`far_cold`], sections 24-25), handing
+//! over to the outer model where the far layer vanishes.
 
 pub(crate) mod corner;
 #[cfg(test)]
@@ -102,10 +105,17 @@ pub(crate) trait Start: Send + Sync {
     fn slip_edge_at_far_corner(&self) -> bool {
         false
     }
-    /// Whether this state is an answer of the corner's outer model (a layer stuck since its
-    /// data, with the bonded field at -1 that no branch's bases carry as data yet).
-    fn corner_layer(&self) -> bool {
-        false
+    /// 1 + e2 of a layer (-1, e2) stuck since this state's data at the corner -1, carrying
+    /// the bonded field there (an answer of the corner's outer model, docs/theory_tangential.md
+    /// section 20).
+    fn near_layer(&self) -> Option<f64> {
+        None
+    }
+    /// 1 - d of a layer (d, 1) stuck since this state's data at the corner +1 (the reloaded
+    /// state's, docs/theory_tangential.md section 24): the data for which [`unload`] takes
+    /// the outer model with a far layer (section 25).
+    fn far_layer(&self) -> Option<f64> {
+        None
     }
 }
 
@@ -138,8 +148,11 @@ impl<T: Start + ?Sized> Start for Arc<T> {
     fn slip_edge_at_far_corner(&self) -> bool {
         (**self).slip_edge_at_far_corner()
     }
-    fn corner_layer(&self) -> bool {
-        (**self).corner_layer()
+    fn near_layer(&self) -> Option<f64> {
+        (**self).near_layer()
+    }
+    fn far_layer(&self) -> Option<f64> {
+        (**self).far_layer()
     }
 }
 
@@ -249,8 +262,11 @@ impl Start for Mirror {
     fn slip_edge_at_far_corner(&self) -> bool {
         self.inner.loaded_edge_at_corner()
     }
-    fn corner_layer(&self) -> bool {
-        self.inner.corner_layer()
+    fn near_layer(&self) -> Option<f64> {
+        self.inner.far_layer()
+    }
+    fn far_layer(&self) -> Option<f64> {
+        self.inner.near_layer()
     }
 }
 
@@ -310,6 +326,14 @@ impl<D: Start + ?Sized> Start for Unloading<D> {
                 seen_from_left: false,
             });
         }
+        if let Some(wd) = self.level.far {
+            out.push(Kink {
+                opx: 2.0 - wd,
+                slip_left: true,
+                seen_from_right: true,
+                seen_from_left: true,
+            });
+        }
         out
     }
     fn tractions(&self, opx: f64, omx: f64) -> (f64, f64) {
@@ -317,7 +341,9 @@ impl<D: Start + ?Sized> Start for Unloading<D> {
     }
     fn forcing(&self, opx: f64, omx: f64) -> f64 {
         let stuck = opx > self.level.wa && omx > self.level.w2.unwrap_or(0.0);
-        if stuck || self.level.layer.is_some_and(|e2| opx < e2) {
+        let layers = self.level.layer.is_some_and(|e2| opx < e2)
+            || self.level.far.is_some_and(|wd| omx < wd);
+        if stuck || layers {
             self.loaded.forcing(opx, omx)
         } else {
             forcing_of(&self.level.state, self.loaded.coupling().bq, opx, omx)
@@ -332,12 +358,16 @@ impl<D: Start + ?Sized> Start for Unloading<D> {
         self.loaded.sign()
     }
     /// The trailing zone (a2, 1) slips with q = +mu p, and p ~ (1 - x)^(-g) at +1 (section
-    /// 13's local exponents): present wherever bp > 0.
+    /// 13's local exponents): present wherever bp > 0, unless a far layer (d2, 1) sticks
+    /// there (docs/theory_tangential.md section 24).
     fn slip_edge_at_far_corner(&self) -> bool {
-        self.level.w2.is_some()
+        self.level.w2.is_some() && self.level.far.is_none()
     }
-    fn corner_layer(&self) -> bool {
-        self.level.layer.is_some()
+    fn near_layer(&self) -> Option<f64> {
+        self.level.layer
+    }
+    fn far_layer(&self) -> Option<f64> {
+        self.level.far
     }
 }
 
@@ -463,6 +493,9 @@ pub(crate) struct Level {
     /// 1 + e2 when the answer is the corner's outer model (docs/theory_tangential.md
     /// sections 20-21): the layer (-1, e2) stuck since Q*, the leading zone (e2, a1).
     pub(crate) layer: Option<f64>,
+    /// 1 - d2 when the answer is the outer model with a far layer (sections 24-25): the
+    /// far layer (d2, 1) stuck since the data, the trailing zone (a2, d2).
+    pub(crate) far: Option<f64>,
     pub(crate) state: Solved,
     /// The last Newton step's size in a1 and a2 (its own error bound).
     pub(crate) step: f64,
@@ -512,6 +545,7 @@ pub(crate) fn unload_level<D: Start + ?Sized>(
             wa: b,
             w2: None,
             layer: None,
+            far: None,
             state: sb,
             step,
             solves,
@@ -549,6 +583,7 @@ pub(crate) fn unload_level<D: Start + ?Sized>(
         wa: la.exp(),
         w2: Some(lw.exp()),
         layer: None,
+        far: None,
         state,
         step,
         solves,
@@ -624,75 +659,248 @@ pub(crate) fn outer_cold_with<D: Start + ?Sized>(
     traction_tol: f64,
     cheap: bool,
 ) -> Result<Unloading<D>> {
-    let keep = cheap;
     let march_tol = if cheap { MARCH_TOL } else { 1e-8 };
-    let w1 = match m.kinks().first() {
-        Some(c) if c.slip_left => c.opx,
-        _ => {
-            return Err(Error::InvalidArgument(
-                "exact corner (outer): the data has no edge zone at -1".into(),
-            ));
-        }
-    };
-    let q_star = m.qp();
-    let mut x = [0.08 * w1, 1.05 * w1, 0.9 * w1];
-    // the load reached, the step, and the answer before (for the predictor)
-    let (mut t, mut h) = (q_star, MARCH_STEP * q_star);
-    let mut before: Option<(f64, corner::OuterEnds)> = None;
-    let mut reached = None;
+    let w1 = edge_width(&**m)?;
     let mut jac = None;
-    let mut march_solves = 0;
-    while t > qp {
-        let next = (t - h).max(qp);
-        // the ends extrapolated in their logarithms from the two answers before
-        let guess = before.map_or(x, |(tb, xb)| {
+    let marched = march(
+        Marched::start(&**m, qp, [0.08 * w1, 1.05 * w1, 0.9 * w1]),
+        qp,
+        cheap,
+        march_tol,
+        &mut jac,
+        |x, q, t, jac| corner::outer_level(&**m, x, q, OUTER_FIRST, t, jac),
+    );
+    if let Some((next, e)) = marched.stopped {
+        return Err(e.reworded(|msg| {
+            format!("marching the outer model down to Q/P = {qp}, at {next}: {msg}")
+        }));
+    }
+    corner_zone_above(&**m, marched.reached.as_ref(), tol)?;
+    if !cheap {
+        jac = None;
+    }
+    layered_answer(m, qp, tol, traction_tol, marched.x, &mut jac).map(|mut u| {
+        u.solves += marched.solves;
+        u
+    })
+}
+
+/// The width of the data's slip zone at -1 ((O1): its first kink, with the slip zone on its
+/// left), the scale of section 19's width laws.
+fn edge_width<D: Start + ?Sized>(m: &D) -> Result<f64> {
+    match m.kinks().first() {
+        Some(c) if c.slip_left => Ok(c.opx),
+        _ => Err(Error::InvalidArgument(
+            "exact corner (outer): the data has no edge zone at -1".into(),
+        )),
+    }
+}
+
+/// Where a march along a layered model's branch has got to ([`march`]).
+struct Marched<const N: usize> {
+    /// The load reached and its ends; the load and ends before it (the predictor's).
+    t: f64,
+    x: [f64; N],
+    before: Option<(f64, [f64; N])>,
+    /// The last load's solution (None: none solved yet).
+    reached: Option<corner::LayeredLevel<N>>,
+    /// The next step, and the step's unit ([`Marched::start`]).
+    h: f64,
+    unit: f64,
+    solves: usize,
+    /// Why the march stopped short of its target: the last failed load and its failure, once
+    /// the step had been halved below [`MIN_MARCH_STEP`] units.
+    stopped: Option<(f64, Error)>,
+}
+
+impl<const N: usize> Marched<N> {
+    /// A march from the data's load with the ends `x` (the width laws of the first step).
+    /// The step's unit is the data's load |Q*|/P (a cycle's amplitude; the data's Q is
+    /// negative in its own frame for a reversal on the way down, seen mirrored), or, at
+    /// Q* = 0, the distance to the target `qp`.
+    fn start<D: Start + ?Sized>(m: &D, qp: f64, x: [f64; N]) -> Self {
+        let q_star = m.qp();
+        let unit = if q_star != 0.0 {
+            q_star.abs()
+        } else {
+            q_star - qp
+        };
+        Marched {
+            t: q_star,
+            x,
+            before: None,
+            reached: None,
+            h: MARCH_STEP * unit,
+            unit,
+            solves: 0,
+            stopped: None,
+        }
+    }
+}
+
+/// The layered models' march down the branch to Q/P = `qp` from `at` (section 21; the
+/// first march of [`outer_cold`], now for either model): each load from the ends of the two
+/// before extrapolated in their logarithms, solved by `solve(guess, load, tolerance, jac)`
+/// to relative steps of `march_tol`, steps doubled after a success (up to
+/// [`MAX_MARCH_STEP`] units) and halved after a failure; the Jacobian carried from load to
+/// load when `keep` (a failed load drops it). It returns where it got to, with the last
+/// failure in `stopped` if the step fell below [`MIN_MARCH_STEP`] units before `qp`.
+fn march<const N: usize>(
+    mut at: Marched<N>,
+    qp: f64,
+    keep: bool,
+    march_tol: f64,
+    jac: &mut Option<[[f64; N]; N]>,
+    mut solve: impl FnMut(
+        [f64; N],
+        f64,
+        f64,
+        &mut Option<[[f64; N]; N]>,
+    ) -> Result<corner::LayeredLevel<N>>,
+) -> Marched<N> {
+    while at.t > qp {
+        let next = (at.t - at.h).max(qp);
+        let (t, x) = (at.t, at.x);
+        let guess = at.before.map_or(x, |(tb, xb)| {
             let r = (next - t) / (t - tb);
             std::array::from_fn(|i| x[i] * (x[i] / xb[i]).powf(r))
         });
         if !keep {
-            jac = None;
+            *jac = None;
         }
-        match corner::outer_level(&**m, guess, next, OUTER_FIRST, march_tol, &mut jac) {
+        match solve(guess, next, march_tol, jac) {
             Ok(o) => {
-                march_solves += o.solves;
-                before = Some((t, x));
-                (t, x) = (next, o.x);
-                h = (2.0 * h).min(MAX_MARCH_STEP * q_star);
-                reached = Some(o);
+                at.solves += o.solves;
+                at.before = Some((t, x));
+                (at.t, at.x) = (next, o.x);
+                at.h = (2.0 * at.h).min(MAX_MARCH_STEP * at.unit);
+                at.reached = Some(o);
             }
             Err(e) => {
-                jac = None;
-                h *= 0.5;
-                if h < 1e-3 * q_star {
-                    return Err(e.reworded(|msg| {
-                        format!("marching the outer model down to Q/P = {qp}, at {next}: {msg}")
-                    }));
+                *jac = None;
+                at.h *= 0.5;
+                if at.h < MIN_MARCH_STEP * at.unit {
+                    at.stopped = Some((next, e));
+                    return at;
                 }
             }
         }
     }
-    // the corner zone's share at level 3 already above the tolerance: no ladder (at b* = 0.9
-    // it is 8e-5, section 21)
-    if let Some(o) = reached {
-        let u0 = corner::first_zero(&o.state, m.coupling().mu, 0.5 * x[0], 0.95).unwrap_or(0.0);
-        if KAPPA * u0 > tol {
-            return Err(Error::ToleranceNotMet {
-                estimate: KAPPA * u0,
-                tolerance: tol,
-                detail: format!(
-                    "the ends with the corner zone, e1 <= {:.2e} (level {OUTER_FIRST})",
-                    KAPPA * u0
-                ),
-            });
+    at
+}
+
+/// ToleranceNotMet where the corner zones' share, [`KAPPA`] times the outer fields' first
+/// zeros below half of each layer, is already above the ends' tolerance at the march's last
+/// load (level 3): no ladder then (at b* = 0.9 it is 8e-5, section 21).
+fn corner_zone_above<D: Start + ?Sized, const N: usize>(
+    m: &D,
+    reached: Option<&corner::LayeredLevel<N>>,
+    tol: f64,
+) -> Result<()> {
+    let Some(o) = reached else {
+        return Ok(());
+    };
+    let mu = m.coupling().mu;
+    let u0 = corner::first_zero(&o.state, mu, 0.5 * o.x[0], 0.95).unwrap_or(0.0);
+    let v0 = o.x.get(3).map_or(0.0, |&wd| {
+        corner::far_first_zero(&o.state, mu, 0.5 * wd, 0.95).unwrap_or(0.0)
+    });
+    let e1 = KAPPA * (u0 + v0);
+    if e1 > tol {
+        return Err(Error::ToleranceNotMet {
+            estimate: e1,
+            tolerance: tol,
+            detail: format!("the ends with the corner zone, e1 <= {e1:.2e} (level {OUTER_FIRST})"),
+        });
+    }
+    Ok(())
+}
+
+/// The second unloading's cold start (docs/theory_tangential.md sections 24-25): the data
+/// has a layer stuck at +1 (the reloaded state's) and its slip zone at -1 is (O1). The
+/// outer model with a far layer ([`corner::far_level`]) is marched from the data's load by
+/// [`march`] from the width laws of section 24's first step (1 + e2 = 0.08 w, 1 + a1 =
+/// 1.05 w, 1 - a2 = 0.9 w, 1 - d2 = 0.9 e_r; w the data's zone at -1, e_r its layer at
+/// +1), then section 20's ladder at `qp` with both layers' checks and corner terms
+/// ([`layered_answer`]). Where the far model stops (the far layer vanishes: on the ply
+/// between -0.4 and -0.5 Q*, section 24), the march goes on from there with section 20's
+/// outer model (the trailing zone reaching +1) on the far model's first three ends: the
+/// hand-over. Where the far model's ladder fails at `qp` itself, the outer model's ladder
+/// from the same ends is tried before the refusal.
+pub(crate) fn far_cold<D: Start + ?Sized>(
+    m: &Arc<D>,
+    qp: f64,
+    tol: f64,
+    traction_tol: f64,
+) -> Result<Unloading<D>> {
+    let w = edge_width(&**m)?;
+    let er = m.far_layer().ok_or_else(|| {
+        Error::InvalidArgument("exact corner (far layer): the data has no layer at +1".into())
+    })?;
+    let mut jac = None;
+    let far = march(
+        Marched::start(&**m, qp, [0.08 * w, 1.05 * w, 0.9 * w, 0.9 * er]),
+        qp,
+        true,
+        MARCH_TOL,
+        &mut jac,
+        |x, q, t, jac| corner::far_level(&**m, x, q, OUTER_FIRST, t, jac),
+    );
+    let three = |x: [f64; 4]| [x[0], x[1], x[2]];
+    let far_reason = match &far.stopped {
+        None => {
+            corner_zone_above(&**m, far.reached.as_ref(), tol)?;
+            match layered_answer(m, qp, tol, traction_tol, far.x, &mut jac) {
+                Ok(mut u) => {
+                    u.solves += far.solves;
+                    return Ok(u);
+                }
+                Err(e) => format!("its ladder at Q/P = {qp}: {e}"),
+            }
         }
+        Some((next, e)) => format!(
+            "its march answered down to Q/P = {} and stopped at {next}: {e}",
+            far.t
+        ),
+    };
+    // the hand-over: section 20's outer model from the far model's last ends
+    let mut jac3 = None;
+    let near = march(
+        Marched {
+            t: far.t,
+            x: three(far.x),
+            before: far.before.map(|(t, x)| (t, three(x))),
+            reached: None,
+            h: (far.t - qp).min(far.h.max(MIN_MARCH_STEP * far.unit)),
+            unit: far.unit,
+            solves: far.solves,
+            stopped: None,
+        },
+        qp,
+        true,
+        MARCH_TOL,
+        &mut jac3,
+        |x, q, t, jac| corner::outer_level(&**m, x, q, OUTER_FIRST, t, jac),
+    );
+    let refuse = |e: Error| {
+        e.reworded(|msg| {
+            format!(
+                "the outer model with a far layer (docs/theory_tangential.md section 25): \
+                 {far_reason}; section 20's outer model after it, from Q/P = {}: {msg}",
+                far.t
+            )
+        })
+    };
+    if let Some((next, e)) = near.stopped {
+        return Err(refuse(e.reworded(|msg| format!("at Q/P = {next}: {msg}"))));
     }
-    if !keep {
-        jac = None;
-    }
-    outer_answer(m, qp, tol, traction_tol, x, &mut jac).map(|mut u| {
-        u.solves += march_solves;
-        u
-    })
+    corner_zone_above(&**m, near.reached.as_ref(), tol).map_err(refuse)?;
+    layered_answer(m, qp, tol, traction_tol, near.x, &mut jac3)
+        .map(|mut u| {
+            u.solves += near.solves;
+            u
+        })
+        .map_err(refuse)
 }
 
 /// The first and the largest step of [`outer_cold`]'s march, in units of Q*: the ply's
@@ -702,30 +910,39 @@ pub(crate) fn outer_cold_with<D: Start + ?Sized>(
 const MARCH_STEP: f64 = 0.1;
 const MAX_MARCH_STEP: f64 = 0.2;
 
-/// The outer model's answer at Q/P = `qp` from the ends `start` ([`corner::outer`]'s
-/// ladder), checked ([`Unloading::admissible`], with the layer's margin), its estimates
-/// raised by the terms of the corner zone it leaves out: [`KAPPA`] u0 for the ends and
+/// The smallest step of [`march`], in units of Q*: the step halving of section 21's march
+/// (a failed load halves it, and the march gives up below 1e-3 Q*); on the ply's second
+/// unloading this brackets the far layer's vanishing to within it (section 25).
+const MIN_MARCH_STEP: f64 = 1e-3;
+
+/// A layered model's answer at Q/P = `qp` from the ends `start` ([`corner::layered`]'s
+/// ladder; 3 ends: the outer model, 4: with the far layer), checked
+/// ([`Unloading::admissible`], with the layers' margins), its estimates raised by the terms
+/// of the corner zones it leaves out: [`KAPPA`] u0 for the ends and
 /// 6 (1 + delta) |B| sqrt(KAPPA u0) for the tractions in (T1) (section 21), delta =
-/// sqrt(bq/bp); ToleranceNotMet where those exceed the tolerances. `jac`: the chord
-/// method's Jacobian to start the ladder's first level from, if any ([`corner::outer`]).
-fn outer_answer<D: Start + ?Sized>(
+/// sqrt(bq/bp), for the corner zone below the near layer (u0, B) and, with a far layer, for
+/// the far corner zone above it (v0, B_u; the same inner problem mirrored, section 24);
+/// ToleranceNotMet where those exceed the tolerances. `jac`: the chord method's Jacobian to
+/// start the ladder's first level from, if any ([`corner::layered`]).
+fn layered_answer<D: Start + ?Sized, const N: usize>(
     m: &Arc<D>,
     qp: f64,
     tol: f64,
     traction_tol: f64,
-    start: corner::OuterEnds,
-    jac: &mut Option<[[f64; 3]; 3]>,
+    start: [f64; N],
+    jac: &mut Option<[[f64; N]; N]>,
 ) -> Result<Unloading<D>> {
-    let c = corner::outer(&**m, qp, tol, traction_tol, start, OUTER_FIRST, jac)?;
-    let [e2, wa, w2] = c.level.x;
-    let largest = c.level.x.iter().fold(0.0f64, |a, v| a.max(*v));
+    let c = corner::layered(&**m, qp, tol, traction_tol, start, OUTER_FIRST, jac)?;
+    let x = c.level.x;
+    let largest = x.iter().fold(0.0f64, |a, v| a.max(*v));
     let mut u = Unloading {
         loaded: m.clone(),
         qp,
         level: Level {
-            wa,
-            w2: Some(w2),
-            layer: Some(e2),
+            wa: x[1],
+            w2: Some(x[2]),
+            layer: Some(x[0]),
+            far: x.get(3).copied(),
             step: c.level.step * largest,
             solves: c.level.solves,
             state: c.level.state,
@@ -737,11 +954,14 @@ fn outer_answer<D: Start + ?Sized>(
         trace: c.trace,
     };
     u.admissible()?;
-    let (u0, b) = u.layer_check()?;
     let k = m.coupling();
-    let e1 = KAPPA * u0;
-    u.c_error += e1;
-    u.traction_error += 6.0 * (1.0 + (k.bq / k.bp).sqrt()) * b * e1.sqrt();
+    let mut e1 = 0.0;
+    for (z, b) in [u.layer_check()?, u.far_layer_check()?] {
+        let e = KAPPA * z;
+        e1 += e;
+        u.c_error += e;
+        u.traction_error += 6.0 * (1.0 + (k.bq / k.bp).sqrt()) * b * e.sqrt();
+    }
     for (estimate, tolerance, what) in [
         (u.c_error, tol, "ends"),
         (u.traction_error, traction_tol, "tractions"),
@@ -803,6 +1023,9 @@ pub(crate) fn unload<D: Start + ?Sized>(
     traction_tol: f64,
 ) -> Result<Unloading<D>> {
     check_load(&**m, qp)?;
+    if m.far_layer().is_some() {
+        return far_cold(m, qp, tol, traction_tol);
+    }
     match three_zone(m, qp, tol, traction_tol) {
         Err(e @ (Error::NoAdmissibleSolution(_) | Error::NoConvergence(_)))
             if outer_applies(&**m) =>
@@ -859,11 +1082,19 @@ pub(crate) fn three_zone<D: Start + ?Sized>(
 /// Q/P must lie on the branch: -mu < Q/P < Q*/P, and below the first-slip load when bp = 0.
 fn check_load<D: Start + ?Sized>(m: &D, qp: f64) -> Result<()> {
     let (k, q_star) = (m.coupling(), m.qp());
-    if m.corner_layer() {
+    if m.near_layer().is_some() {
         return Err(Error::InvalidArgument(
-            "exact unloading: the data is an answer of the corner's outer model (a layer \
-             stuck at a contact end with the bonded field there, docs/theory_tangential.md \
-             sections 21 and 23), which no branch takes as data yet"
+            "exact unloading: the data has a stuck layer at the branch's corner -1 (an answer \
+             of the corner's outer model there, docs/theory_tangential.md sections 21 and 23), \
+             which no branch takes as data yet"
+                .into(),
+        ));
+    }
+    if m.far_layer().is_some() && !(k.bp > 0.0 && m.loaded_edge_at_corner()) {
+        return Err(Error::InvalidArgument(
+            "exact unloading: the data has a stuck layer at +1 but no slip zone on the bound at \
+             -1 ((O1) of docs/theory_tangential.md section 20), the only such data the outer \
+             model with a far layer is derived for (section 24)"
                 .into(),
         ));
     }
@@ -900,10 +1131,20 @@ pub(crate) fn unload_from<D: Start + ?Sized>(
     let m = &prev.loaded;
     check_load(&**m, qp)?;
     let (wa, w2) = (prev.level.wa, prev.level.w2);
+    if let (Some(e2), Some(w2), Some(wd)) = (prev.level.layer, w2, prev.level.far) {
+        // the far model from prev's ends; where it fails (the far layer gone), section 20's
+        // outer model from prev's first three ends (the hand-over, section 25), then the cold
+        // start
+        let far = layered_answer(m, qp, tol, traction_tol, [e2, wa, w2, wd], &mut None);
+        return far.or_else(|_| {
+            layered_answer(m, qp, tol, traction_tol, [e2, wa, w2], &mut None)
+                .or_else(|_| unload(m, qp, tol, traction_tol))
+        });
+    }
     if let (Some(e2), Some(w2)) = (prev.level.layer, w2) {
         // the outer model from prev's ends; where it fails (the layer gone), the three-zone
         // pattern from prev's stick set: the hand-over (section 21), then the cold start
-        return match outer_answer(m, qp, tol, traction_tol, [e2, wa, w2], &mut None) {
+        return match layered_answer(m, qp, tol, traction_tol, [e2, wa, w2], &mut None) {
             Ok(u) => Ok(u),
             Err(_) => match ladder(m, qp, tol, traction_tol, (wa, Some(w2)), 1, 0) {
                 Ok(u) => Ok(u),
@@ -1022,7 +1263,49 @@ impl<D: Start + ?Sized> Unloading<D> {
         if self.level.layer.is_some() {
             self.layer_check()?;
         }
+        if self.level.far.is_some() {
+            self.far_layer_check()?;
+        }
         Ok(())
+    }
+
+    /// The far layer (d2, 1) of an answer of the outer model with a far layer
+    /// (docs/theory_tangential.md sections 24-25), as [`Unloading::layer_check`] mirrored:
+    /// p > 0 and |q| <= mu p at the fractions [`LAYER_FRACTIONS`] of 1 - d2 that lie above
+    /// v0, the outer field's first zero of mu p - q below (1 - d2)/2 ([`corner::far_first_zero`];
+    /// the far corner zone sits there); Err(NoAdmissibleSolution) otherwise. Returns v0 and
+    /// the new increment's bonded amplitude |B_u| = |f| v^(1/2), f = (p - p_r) +
+    /// i (q - q_r)/delta ((S4): the data's own bonded field cancels), read at
+    /// v = INNER (1 - d2)/2; (0, 0) without a far layer.
+    pub(crate) fn far_layer_check(&self) -> Result<(f64, f64)> {
+        let Some(wd) = self.level.far else {
+            return Ok((0.0, 0.0));
+        };
+        let k = self.loaded.coupling();
+        let st = &self.level.state;
+        let v0 = corner::far_first_zero(st, k.mu, 0.5 * wd, 0.95).unwrap_or(0.0);
+        for f in LAYER_FRACTIONS {
+            let v = f * wd;
+            if v <= v0 {
+                break;
+            }
+            let (p, q) = st.tractions(2.0 - v, v);
+            if !(p > 0.0 && q.abs() <= k.mu * p) {
+                return Err(Error::NoAdmissibleSolution(format!(
+                    "exact corner (far layer) at Q/P = {}: the layer ({}, 1) stuck since the \
+                     data breaks |q| <= mu p at 1 - x = {v:e} (p = {p:e}, q = {q:e}; the outer \
+                     field's first zero of mu p - q lies at {v0:e}; docs/theory_tangential.md \
+                     section 25)",
+                    self.qp,
+                    1.0 - wd
+                )));
+            }
+        }
+        let v = 0.5 * corner::INNER * wd;
+        let (p, q) = st.tractions(2.0 - v, v);
+        let (pr, qr) = self.loaded.tractions(2.0 - v, v);
+        let b = (p - pr).hypot((q - qr) / (k.bq / k.bp).sqrt()) * v.sqrt();
+        Ok((v0, b))
     }
 
     /// The corner's stuck layer (-1, e2) of an outer-model answer (docs/theory_tangential.md
@@ -1128,8 +1411,41 @@ impl<D: Start + ?Sized> Unloading<D> {
                 .map(|w| graded(w[0], w[1], &|o| self.slip_slope(o, 2.0 - o)))
                 .sum::<f64>()
         } else if omx < w2 {
-            // s(x) = int_{a2}^x slope = int_{1 - x}^{w2} slope d(1 - x)
-            graded(omx, w2, &|r| self.slip_slope(2.0 - r, r))
+            let wd = self.level.far.unwrap_or(0.0);
+            if omx <= wd {
+                return 0.0;
+            }
+            // the data's kinks inside the trailing zone (the reloaded state's layer top,
+            // section 24) cut the rule, in 1 - x; a node whose slope is not finite is one that
+            // the frame places onto a zone end (the far layer's top d2 is held in 1 + x, whose
+            // ulp 2.2e-16 exceeds the rule's nodes nearest d2 when 1 - d2 < 1e-10, section
+            // 25), where the zones' H[q] is NaN: left out, as in [`graded`] (its weight below
+            // 1.4e-13 of the piece, the slope bounded there)
+            let slope = |r: f64| {
+                let v = self.slip_slope(2.0 - r, r);
+                if v.is_finite() { v } else { 0.0 }
+            };
+            let piecewise = |lo: f64, hi: f64| {
+                let mut cuts = vec![lo, hi];
+                for c in self.loaded.kinks() {
+                    let r = 2.0 - c.opx;
+                    if r > lo && r < hi {
+                        cuts.push(r);
+                    }
+                }
+                cuts.sort_by(f64::total_cmp);
+                cuts.windows(2)
+                    .map(|w| graded(w[0], w[1], &slope))
+                    .sum::<f64>()
+            };
+            if self.level.far.is_some() && omx - wd < w2 - omx {
+                // s(x) = -int_x^{d2} slope = -int_{1 - d2}^{1 - x} slope d(1 - x): from the
+                // far layer, the nearer stick end (the slip vanishes at both, (C2))
+                -piecewise(wd, omx)
+            } else {
+                // s(x) = int_{a2}^x slope = int_{1 - x}^{w2} slope d(1 - x)
+                piecewise(omx, w2)
+            }
         } else {
             0.0
         }
@@ -1141,10 +1457,16 @@ impl<D: Start + ?Sized> Unloading<D> {
     /// the second < 0 (q = +mu p).
     pub(crate) fn zone_slips(&self) -> (Slips, Slips) {
         let (wa, w2) = (self.level.wa, self.level.w2.unwrap_or(0.0));
+        // with a far layer the trailing zone (a2, d2) at the fractions of its width from d2,
+        // each point from its nearer stick end
+        let wd = self.level.far.unwrap_or(0.0);
         let trailing = || {
             CHECK_FRACTIONS
                 .iter()
-                .map(|f| (f * w2, self.slip(2.0 - f * w2, f * w2)))
+                .map(|f| {
+                    let o = wd + f * (w2 - wd);
+                    (o, self.slip(2.0 - o, o))
+                })
                 .collect()
         };
         if let Some(e2) = self.level.layer {

@@ -996,6 +996,7 @@ fn outer_model_on_the_ply_reloading_step() {
             wa: o.x[1],
             w2: Some(o.x[2]),
             layer: Some(o.x[0]),
+            far: None,
             state: o.state,
             step: o.step,
             solves: o.solves,
@@ -1799,5 +1800,199 @@ fn measure_second_unloading_march() {
                 .iter()
                 .all(|z| *z == crate::lcp::history::Zone::Stick)
         );
+    }
+}
+
+/// The routed second unloading on the ply (mu = 0.3, Q* = 0.6 mu P; docs/theory_tangential.md
+/// section 25): the reloaded state at +Q* (to (1e-8, 1e-5)) as data; [`unload`] cold at
+/// 0.9 Q* (the far model's march and ladder), then [`unload_from`] load by load down the
+/// branch through the hand-over; per load the ends (in units of w and e_r), the estimates,
+/// the level, the solves and the time, int p and int q by the independent quadrature and the
+/// residuals between collocation points; then the far layer's vanishing bisected on the far
+/// model at level `ORTHOSLIP_LEVEL` (4 by default) from the last load with a far layer (each
+/// trial from the last answer's ends). `ORTHOSLIP_LOADS`: the loads in units of Q* (the
+/// first cold), by default 0.9, 0.5, 0, -0.3, -0.4, -0.45, -0.5. Prints, asserts nothing.
+#[cfg(feature = "measure")]
+#[test]
+#[ignore = "measurement"]
+fn measure_routed_second_unloading() {
+    use super::super::unload::corner::far_level;
+    use super::super::unload::unload_from;
+    let env = |name: &str| std::env::var(name).ok().and_then(|s| s.parse::<f64>().ok());
+    let level = env("ORTHOSLIP_LEVEL").map_or(4, |l| l as usize);
+    let t0 = std::time::Instant::now();
+    let k = ply();
+    let g = edge_exponent(&k);
+    let q_star = 0.6 * k.mu;
+    let loaded = Arc::new(monotonic(&k, q_star, 1e-10, 1e-8).unwrap());
+    let unloaded = Arc::new(unload(&loaded, -q_star, 1e-10, 1e-5).unwrap());
+    let mirror = Arc::new(Mirror { inner: unloaded });
+    let r = Arc::new(reload(&mirror, q_star, 1e-8, 1e-5).unwrap());
+    let (er, w) = (r.far_layer().unwrap(), r.mirrored.level.w2.unwrap());
+    println!("data {:?}: e_r = {er:.7e}, w = {w:.7e}", t0.elapsed());
+    let show = |u: &Unloading<Reloading>, dt: std::time::Duration| {
+        let s = &u.level.state;
+        let (ip, iq) = quadrature_forces(g, s);
+        let res = s.residual_between_points(&|a: f64, b: f64| r.forcing(a, b));
+        println!(
+            "Q/Q* = {:.6}: 1 + e2 = {:.7e} ({:.4} w), 1 + a1 = {:.9e} ({:.4} w), 1 - a2 = \
+             {:.7e} ({:.4} w), 1 - d2 = {} ; estimates {:.1e} {:.1e}; level {}, {} solves, \
+             {dt:?}; int p - 1 = {:.1e}, int q - Q/P = {:.1e}, residual {res:.1e}",
+            u.qp / q_star,
+            u.level.layer.unwrap(),
+            u.level.layer.unwrap() / w,
+            u.level.wa,
+            u.level.wa / w,
+            u.level.w2.unwrap(),
+            u.level.w2.unwrap() / w,
+            u.level.far.map_or("none".to_string(), |d| format!(
+                "{d:.6e} ({:.4} e_r)",
+                d / er
+            )),
+            u.c_error,
+            u.traction_error,
+            u.levels,
+            u.solves,
+            ip - 1.0,
+            iq - u.qp
+        );
+    };
+    let loads: Vec<f64> = std::env::var("ORTHOSLIP_LOADS")
+        .ok()
+        .map(|s| s.split(',').filter_map(|v| v.trim().parse().ok()).collect())
+        .unwrap_or(vec![0.9, 0.5, 0.0, -0.3, -0.4, -0.45, -0.5]);
+    let t = std::time::Instant::now();
+    let mut prev = unload(&r, loads[0] * q_star, 1e-8, 1e-5).unwrap();
+    show(&prev, t.elapsed());
+    let mut last_far: Option<(f64, [f64; 4])> = None;
+    let mut first_near: Option<f64> = None;
+    for f in &loads[1..] {
+        let t = std::time::Instant::now();
+        if let Some(wd) = prev.level.far {
+            last_far = Some((
+                prev.qp,
+                [
+                    prev.level.layer.unwrap(),
+                    prev.level.wa,
+                    prev.level.w2.unwrap(),
+                    wd,
+                ],
+            ));
+        }
+        let u = match unload_from(&prev, None, f * q_star, 1e-8, 1e-5) {
+            Ok(u) => u,
+            Err(e) => {
+                println!("Q/Q* = {f}: {e}; {:?}", t.elapsed());
+                break;
+            }
+        };
+        show(&u, t.elapsed());
+        if u.level.far.is_none() && first_near.is_none() {
+            first_near = Some(u.qp);
+        }
+        prev = u;
+    }
+    let (Some((mut lo, mut x)), Some(mut hi)) = (last_far, first_near) else {
+        return;
+    };
+    while (lo - hi) > 2e-4 * q_star {
+        let mid = 0.5 * (lo + hi);
+        let t = std::time::Instant::now();
+        match far_level(&*r, x, mid, level, 1e-10, &mut None) {
+            Ok(o) => {
+                println!(
+                    "bisection, level {level}: Q/Q* = {:.6}: 1 - d2 = {:.3e} ({:.2e} e_r), \
+                     1 + a1 = {:.6e}; {:?}",
+                    mid / q_star,
+                    o.x[3],
+                    o.x[3] / er,
+                    o.x[1],
+                    t.elapsed()
+                );
+                lo = mid;
+                x = o.x;
+            }
+            Err(e) => {
+                println!(
+                    "bisection, level {level}: Q/Q* = {:.6}: {e}; {:?}",
+                    mid / q_star,
+                    t.elapsed()
+                );
+                hi = mid;
+            }
+        }
+    }
+    println!(
+        "the far layer vanishes between {:.6} and {:.6} Q*; {:?} in all",
+        lo / q_star,
+        hi / q_star,
+        t0.elapsed()
+    );
+}
+
+/// The routed second unloading on the ply (mu = 0.3, Q* = 0.6 mu P; docs/theory_tangential.md
+/// section 25) against section 24's level-3 march: the reloaded state at +Q* (to (1e-8,
+/// 1e-5)) as data; [`unload`] cold at 0.9 Q* (the far model's march and ladder), then
+/// `unload_from` at 0 and at -0.5 Q* (through the far layer's vanishing: section 20's outer
+/// model). At each load the ends, in units of w (the data's zone at -1) and e_r (its layer
+/// at +1), lie within section 24's table: its rounding (half a unit of the fourth decimal),
+/// the level-3 roots' noise (6e-5 relatively, two runs there) and the answer's estimate;
+/// the answer is admissible (both slips' signs, both layers' margins), and int p = 1,
+/// int q = Q/P by the independent quadrature.
+#[test]
+#[ignore = "slow: about 5 min (296 s in one run), the ply's data (40-110 s) and three routed loads"]
+fn routed_second_unloading_against_the_march() {
+    use super::super::unload::unload_from;
+    let k = ply();
+    let g = edge_exponent(&k);
+    let q_star = 0.6 * k.mu;
+    let t0 = std::time::Instant::now();
+    let loaded = Arc::new(monotonic(&k, q_star, 1e-10, 1e-8).unwrap());
+    let unloaded = Arc::new(unload(&loaded, -q_star, 1e-10, 1e-5).unwrap());
+    let mirror = Arc::new(Mirror { inner: unloaded });
+    let r = Arc::new(reload(&mirror, q_star, 1e-8, 1e-5).unwrap());
+    let (er, w) = (r.far_layer().unwrap(), r.mirrored.level.w2.unwrap());
+    println!("data: e_r = {er:.7e}, w = {w:.7e}; {:?}", t0.elapsed());
+    // section 24's table: Q/Q*, 1 + e2, 1 + a1, 1 - a2 (units of w), 1 - d2 (units of e_r)
+    let table = [
+        (0.9, [0.1234, 1.0300, 0.3771], Some(0.9334)),
+        (0.0, [0.1074, 1.5471, 0.4114], Some(0.2306)),
+        (-0.5, [0.0912, 2.5911, 0.4834], None),
+    ];
+    let mut prev: Option<Unloading<Reloading>> = None;
+    for (f, ends, far) in table {
+        let t = std::time::Instant::now();
+        let u = match &prev {
+            None => unload(&r, f * q_star, 1e-8, 1e-5).unwrap(),
+            Some(p) => unload_from(p, None, f * q_star, 1e-8, 1e-5).unwrap(),
+        };
+        let x = [u.level.layer.unwrap(), u.level.wa, u.level.w2.unwrap()];
+        println!(
+            "Q/Q* = {f}: ends {:?} w, far layer {:?} e_r; estimates {:.1e} {:.1e}; level {}, \
+             {:?}",
+            x.map(|v| v / w),
+            u.level.far.map(|d| d / er),
+            u.c_error,
+            u.traction_error,
+            u.levels,
+            t.elapsed()
+        );
+        let within = |got: f64, table: f64, unit: f64| {
+            (got - table * unit).abs() <= 0.5e-4 * unit + 6e-5 * got + u.c_error
+        };
+        for (x, e) in x.iter().zip(ends) {
+            assert!(within(*x, e, w), "{f}: {} against {e}", x / w);
+        }
+        match (u.level.far, far) {
+            (Some(d), Some(e)) => assert!(within(d, e, er), "{f}: {} e_r against {e}", d / er),
+            (None, None) => {}
+            other => panic!("{f}: far layer {other:?}"),
+        }
+        u.admissible().unwrap();
+        let (lead, trail) = u.zone_slips();
+        assert!(lead.iter().all(|s| s.1 > 0.0) && trail.iter().all(|s| s.1 < 0.0));
+        let (ip, iq) = quadrature_forces(g, &u.level.state);
+        assert!((ip - 1.0).abs() < 1e-9 && (iq - u.qp).abs() < 1e-9);
+        prev = Some(u);
     }
 }

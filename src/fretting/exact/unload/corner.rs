@@ -288,14 +288,14 @@ pub(crate) struct LayeredLevel<const N: usize> {
 /// A level of the outer model (three ends, [`outer_level`]).
 pub(crate) type OuterLevel = LayeredLevel<3>;
 
-/// A ladder's rung: the trace shows 1 + e2 and 1 - a2; the change sums all three ends; the
+/// A ladder's rung: the trace shows 1 + e2 and 1 - a2; the change sums all the ends; the
 /// step is made absolute by the largest end (an upper bound of every end's move).
-impl super::super::Rung for OuterLevel {
+impl<const N: usize> super::super::Rung for LayeredLevel<N> {
     fn unknowns(&self) -> (f64, f64) {
         (self.x[0], self.x[2])
     }
     fn moved(&self, before: &Self) -> f64 {
-        (0..3).map(|i| (self.x[i] - before.x[i]).abs()).sum()
+        (0..N).map(|i| (self.x[i] - before.x[i]).abs()).sum()
     }
     fn step(&self) -> f64 {
         self.step * self.x.iter().fold(0.0f64, |a, v| a.max(*v))
@@ -344,6 +344,23 @@ pub(crate) fn outer<D: Start + ?Sized>(
     first: usize,
     jac: &mut Option<[[f64; 3]; 3]>,
 ) -> Result<super::super::Climbed<OuterLevel>> {
+    layered(m, qp, tol, traction_tol, start, first, jac)
+}
+
+/// [`outer`]'s ladder for either layered model, by its count of ends ([`model_level`]):
+/// the outer model (3) or the outer model with a far layer (4, docs/theory_tangential.md
+/// section 24), with the same factors on the estimates (the far model's levels are the
+/// outer model's bases plus the mirrored corner's, whose transforms are the same functions,
+/// `far_corner_mirrors_the_corner`).
+pub(crate) fn layered<D: Start + ?Sized, const N: usize>(
+    m: &D,
+    qp: f64,
+    tol: f64,
+    traction_tol: f64,
+    start: [f64; N],
+    first: usize,
+    jac: &mut Option<[[f64; N]; N]>,
+) -> Result<super::super::Climbed<LayeredLevel<N>>> {
     let g = edge_exponent(m.coupling());
     let climbed = super::super::ladder(
         g,
@@ -351,9 +368,9 @@ pub(crate) fn outer<D: Start + ?Sized>(
         tol / OUTER_END_FACTOR,
         traction_tol / OUTER_TRACTION_FACTOR,
         0,
-        |level, prev: Option<&OuterLevel>| {
+        |level, prev: Option<&LayeredLevel<N>>| {
             let x0 = prev.map_or(start, |p| p.x);
-            outer_level(m, x0, qp, level, 0.1 * tol, jac)
+            model_level(m, x0, qp, level, 0.1 * tol, jac)
         },
     )?;
     climbed
@@ -365,13 +382,53 @@ pub(crate) fn outer<D: Start + ?Sized>(
         .map_err(|trace| {
             let last = trace.last().map_or((f64::NAN, f64::NAN), |t| (t.3, t.4));
             Error::NoConvergence(format!(
-                "exact corner (outer): levels {first}-{} did not agree to {tol:e} (ends) and \
+                "exact corner ({}): levels {first}-{} did not agree to {tol:e} (ends) and \
              {traction_tol:e} (tractions): the last two moved them by {:e} and {:e}",
+                model_name(N),
                 super::super::MAX_LEVEL,
                 last.0,
                 last.1
             ))
         })
+}
+
+/// The layered model with `n` ends, as the messages name it.
+fn model_name(n: usize) -> &'static str {
+    if n == 4 { "far layer" } else { "outer" }
+}
+
+/// The fixed-ends solve of the layered model with N ends: [`outer_fixed`] (3) or
+/// [`far_fixed`] (4).
+pub(crate) fn model_fixed<D: Start + ?Sized, const N: usize>(
+    m: &D,
+    x: [f64; N],
+    qp: f64,
+    level: usize,
+) -> Result<Solved> {
+    let x: &[f64] = &x;
+    match N {
+        3 => outer_fixed(m, [x[0], x[1], x[2]], qp, level),
+        4 => far_fixed(m, [x[0], x[1], x[2], x[3]], qp, level),
+        _ => Err(Error::InvalidArgument(format!(
+            "exact corner: no layered model with {N} ends"
+        ))),
+    }
+}
+
+/// The layered model with N ends at one level ([`outer_level`], [`far_level`]): the near
+/// layer is end 0, the far layer (N = 4) end 3.
+pub(crate) fn model_level<D: Start + ?Sized, const N: usize>(
+    m: &D,
+    x0: [f64; N],
+    qp: f64,
+    level: usize,
+    tol: f64,
+    jac: &mut Option<[[f64; N]; N]>,
+) -> Result<LayeredLevel<N>> {
+    let layers: &[usize] = if N == 4 { &[0, 3] } else { &[0] };
+    layered_level(x0, tol, jac, model_name(N), layers, |x| {
+        model_fixed(m, x, qp, level)
+    })
 }
 
 /// The layer's floor: a step of the chord method to 1 + e2 below it ends the outer model
@@ -394,9 +451,7 @@ pub(crate) fn outer_level<D: Start + ?Sized>(
     tol: f64,
     jac: &mut Option<[[f64; 3]; 3]>,
 ) -> Result<OuterLevel> {
-    layered_level(x0, tol, jac, "outer", &[0], |x| {
-        outer_fixed(m, x, qp, level)
-    })
+    model_level(m, x0, qp, level, tol, jac)
 }
 
 /// The border constants' root in the logarithms of the ends from `x0` by the chord method
@@ -467,10 +522,32 @@ fn layered_level<const N: usize>(
 /// top by factors `ratio`, the last point above the first sign change, refined by
 /// bisection in ln(1 + x) (None if it keeps its sign down to 1e-300).
 pub(crate) fn first_zero(st: &Solved, mu: f64, top: f64, ratio: f64) -> Option<f64> {
-    let f = |o: f64| {
-        let (p, q) = st.tractions(o, 2.0 - o);
-        q + mu * p
-    };
+    first_zero_of(
+        |o: f64| {
+            let (p, q) = st.tractions(o, 2.0 - o);
+            q + mu * p
+        },
+        top,
+        ratio,
+    )
+}
+
+/// [`first_zero`] at the far corner +1 (docs/theory_tangential.md section 24): the first
+/// zero of mu p - q below the far layer's top, in v = 1 - x from `top` down.
+pub(crate) fn far_first_zero(st: &Solved, mu: f64, top: f64, ratio: f64) -> Option<f64> {
+    first_zero_of(
+        |v: f64| {
+            let (p, q) = st.tractions(2.0 - v, v);
+            mu * p - q
+        },
+        top,
+        ratio,
+    )
+}
+
+/// The first sign change of `f` scanning its argument down from `top` by factors `ratio`,
+/// refined by bisection in its logarithm (None if none down to 1e-300).
+fn first_zero_of(f: impl Fn(f64) -> f64, top: f64, ratio: f64) -> Option<f64> {
     let (mut hi, mut fhi) = (top, f(top));
     let mut lo = hi * ratio;
     while lo > 1e-300 {
@@ -494,12 +571,10 @@ pub(crate) fn first_zero(st: &Solved, mu: f64, top: f64, ratio: f64) -> Option<f
     None
 }
 
-/// The second unloading's outer model (docs/theory_tangential.md section 24; not routed yet:
-/// `unload` refuses data with a layer, and the section's measurements call these items
-/// directly): from a data state with a stuck layer at +1 (the reloaded state at +Q*), the
+/// The second unloading's outer model (docs/theory_tangential.md sections 24-25; routed by
+/// `unload` for data with a layer at +1): from a data state with a stuck layer at +1 (the reloaded state at +Q*), the
 /// ends 1 + e2, 1 + a1, 1 - a2 as [`OuterEnds`] and 1 - d2, the far layer (d2, 1) stuck
 /// since the data.
-#[cfg_attr(not(feature = "measure"), allow(dead_code))]
 pub(crate) type FarEnds = [f64; 4];
 
 /// The zones of the outer model with a far layer: [`outer_specs`]'s corner zone, layer,
@@ -508,7 +583,6 @@ pub(crate) type FarEnds = [f64; 4];
 /// layer's stick zone ({0} for p at both ends, q {0, 1 - g} at d2 and {0} at its top) and
 /// the far corner zone (1 - INNER (1 - d2), 1) with the data's state on the bound
 /// q = +mu p (exponent -g at +1) and the bonded powers ([`Kind::FarCorner`]).
-#[cfg_attr(not(feature = "measure"), allow(dead_code))]
 pub(crate) fn far_specs(
     k: &Coupling,
     kinks: &[super::Kink],
@@ -548,7 +622,6 @@ pub(crate) fn far_specs(
 /// `m`: four border constants (the layer's, the stick set's two, the far layer's) and (C2)
 /// across both slip zones between stick components. The far layer must hold none of the
 /// data's kinks (InvalidArgument otherwise: its bases carry none).
-#[cfg_attr(not(feature = "measure"), allow(dead_code))]
 pub(crate) fn far_fixed<D: Start + ?Sized>(
     m: &D,
     x: FarEnds,
@@ -578,7 +651,6 @@ pub(crate) type FarLevel = LayeredLevel<4>;
 
 /// The four border constants' root in the logarithms of the ends from `x0`, by the chord
 /// method as [`outer_level`] (a step to either layer below [`LAYER_MIN`] ends it).
-#[cfg_attr(not(feature = "measure"), allow(dead_code))]
 pub(crate) fn far_level<D: Start + ?Sized>(
     m: &D,
     x0: FarEnds,
@@ -587,7 +659,5 @@ pub(crate) fn far_level<D: Start + ?Sized>(
     tol: f64,
     jac: &mut Option<[[f64; 4]; 4]>,
 ) -> Result<FarLevel> {
-    layered_level(x0, tol, jac, "far layer", &[0, 3], |x| {
-        far_fixed(m, x, qp, level)
-    })
+    model_level(m, x0, qp, level, tol, jac)
 }

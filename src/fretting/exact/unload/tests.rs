@@ -1563,3 +1563,127 @@ fn far_corner_mirrors_the_corner() {
     println!("tractions: mirrored {worst:.1e}, level 4 {levels:.1e} (relative to p)");
     assert!(worst < levels, "{worst:e} {levels:e}");
 }
+
+/// The routed second unloading on data with a layer at +1 (docs/theory_tangential.md
+/// section 25), at strong coupling (b* = 0.9, mu~ = 1, Q* = 0.3 mu P): the data is the
+/// first unloading's outer-model answer at 0.9 Q* (a layer stuck since Q* at -1, section
+/// 21) seen mirrored, i.e. the reversal from it, whose layer lies at +1 with the bonded
+/// field there and whose zone at -1 is the mirrored trailing zone ((O1)): the reloaded
+/// state's structure (section 24) on a material where every width is resolved by a few
+/// panels. [`unload`] answers at one load with the outer model with a far layer; checked:
+/// - against the direct fixed-level root of section 24 ([`corner::far_level`]) started
+///   from the width laws, not from the march: the ends within the routed estimate;
+/// - the border constants of [`corner::far_fixed`] at the routed ends;
+/// - int p = 1 and int q = Q/P by the independent contact rule; (U1)-(U2) between the
+///   collocation points (relative to bq p);
+/// - (C2) across both slip zones by [`corner::slip_left`] (a rule other than the
+///   constraint's): each zone's slip from either stick end agrees;
+/// - the admissibility (both slips' signs, both layers' margins) and the far layer inside
+///   the data's layer (1 - d2 < e_r).
+#[test]
+fn routed_far_layer_at_strong_coupling() {
+    let k = strong();
+    let q_star = 0.3;
+    let t0 = std::time::Instant::now();
+    let m = Arc::new(monotonic(&k, q_star, 1e-10, 1e-8).unwrap());
+    let first = Arc::new(unload(&m, 0.9 * q_star, 1e-3, 1e-2).unwrap());
+    let er = first
+        .level
+        .layer
+        .expect("the first unloading's outer model");
+    let inner: Arc<dyn Start> = first.clone();
+    let data = Arc::new(Mirror { inner });
+    assert_eq!(data.far_layer(), Some(er));
+    println!("data: e_r = {er:.6e}, {:?}", t0.elapsed());
+    // the reversal from 0.9 Q* back up to 0.95 Q*, in the mirrored frame
+    let qp = -0.95 * q_star;
+    let t = std::time::Instant::now();
+    let u = unload(&data, qp, 1e-3, 1e-2).unwrap();
+    let (e2, wa, w2) = (u.level.layer.unwrap(), u.level.wa, u.level.w2.unwrap());
+    let wd = u.level.far.expect("the far layer");
+    println!(
+        "routed: 1 + e2 = {e2:.8e}, 1 + a1 = {wa:.8e}, 1 - a2 = {w2:.8e}, 1 - d2 = {wd:.8e} \
+         ({:.4} e_r); estimates {:.2e}, {:.2e}; level {}, {} solves, {:?}",
+        wd / er,
+        u.c_error,
+        u.traction_error,
+        u.levels,
+        u.solves,
+        t.elapsed()
+    );
+    assert!(wd < er);
+    let s = &u.level.state;
+    let c = corner::far_fixed(&*data, [e2, wa, w2, wd], qp, u.levels).unwrap();
+    println!("far_fixed at the routed ends: constants {:?}", c.sigma);
+    assert!(c.sigma.iter().all(|v| v.abs() < 1e-6), "{:?}", c.sigma);
+    // the direct root at level 3 from the width laws (section 24's start, w the data's zone
+    // at -1): the ladder's level 3 found independently of the march, so within the ladder's
+    // own estimate (twice the change from level 3 to the level reached) of the routed answer
+    let w = first.level.w2.unwrap();
+    let t = std::time::Instant::now();
+    let d = corner::far_level(
+        &*data,
+        [0.08 * w, 1.05 * w, 0.9 * w, 0.9 * er],
+        qp,
+        3,
+        1e-8,
+        &mut None,
+    )
+    .unwrap();
+    let apart: f64 = [e2, wa, w2, wd]
+        .iter()
+        .zip(d.x)
+        .map(|(a, b)| (a - b).abs())
+        .sum();
+    let dt = distance(edge_exponent(&k), s, &d.state);
+    let (u0, _) = u.layer_check().unwrap();
+    let (v0, b) = u.far_layer_check().unwrap();
+    let ladder = u.c_error - KAPPA * (u0 + v0);
+    println!(
+        "direct far_level at level 3: {:?}, apart {apart:.2e} (the ladder's estimate {ladder:.2e}, \
+         with the corner zones {:.2e}), tractions {dt:.2e} (estimate {:.2e}); {} solves, {:?}",
+        d.x,
+        u.c_error,
+        u.traction_error,
+        d.solves,
+        t.elapsed()
+    );
+    assert!(
+        apart <= ladder && dt <= u.traction_error,
+        "{apart:e} {dt:e}"
+    );
+    let (ip, iq) = quadrature_forces(edge_exponent(&k), s);
+    let res = s.residual_between_points(&|a: f64, b: f64| data.forcing(a, b));
+    println!(
+        "int p - 1 = {:.1e}, int q - Q/P = {:.1e}, residual between points {res:.1e}",
+        ip - 1.0,
+        iq - qp
+    );
+    assert!((ip - 1.0).abs() < 1e-9 && (iq - qp).abs() < 1e-9);
+    assert!(res < 1e-6, "{res:e}");
+    let (a2, d2) = (2.0 - w2, 2.0 - wd);
+    for f in [0.1, 0.5, 0.9] {
+        let o = e2 + f * (wa - e2);
+        let (l0, l1) = (
+            corner::slip_left(s, &*data, o, e2),
+            corner::slip_left(s, &*data, o, wa),
+        );
+        let o = a2 + f * (d2 - a2);
+        let (t0, t1) = (
+            corner::slip_left(s, &*data, o, a2),
+            corner::slip_left(s, &*data, o, d2),
+        );
+        println!("(C2) at {f}: leading {l0:.6e} {l1:.6e}, trailing {t0:.6e} {t1:.6e}");
+        assert!(l0 > 0.0 && (l0 - l1).abs() < 1e-3 * l0, "{l0:e} {l1:e}");
+        assert!(
+            t0 < 0.0 && (t0 - t1).abs() < 1e-3 * t0.abs(),
+            "{t0:e} {t1:e}"
+        );
+    }
+    let (lead, trail) = u.zone_slips();
+    assert!(lead.iter().all(|s| s.1 > 0.0) && trail.iter().all(|s| s.1 < 0.0));
+    println!(
+        "layers' first zeros u0 = {u0:.3e}, v0 = {v0:.3e}, |B_u| = {b:.3e}; {:?} in all",
+        t0.elapsed()
+    );
+}
