@@ -1939,8 +1939,9 @@ fn measure_routed_second_unloading() {
 /// the level-3 roots' noise (6e-5 relatively, two runs there) and the answer's estimate;
 /// the answer is admissible (both slips' signs, both layers' margins), and int p = 1,
 /// int q = Q/P by the independent quadrature.
+#[cfg(feature = "measure")]
 #[test]
-#[ignore = "slow: about 5 min (296 s in one run), the ply's data (40-110 s) and three routed loads"]
+#[ignore = "measurement: about 5 min (296 s in one run), the ply's data (40-110 s) and three routed loads"]
 fn routed_second_unloading_against_the_march() {
     use super::super::unload::unload_from;
     let k = ply();
