@@ -428,20 +428,31 @@ fn weak_coupling_in_a_thin_slip_zone() {
 #[test]
 fn weak_coupling_tractions_in_thin_slip_zones() {
     for (b, mu, ttol) in [(0.005, 0.0289623, 1e-10), (0.01, 0.0725833, 1e-8)] {
-        let k = Coupling { bp: b, bq: b, mu };
-        let s = coupled::solve_to(&k, 1e-10, ttol).unwrap();
-        assert_eq!(s.regime(), "spectral", "b* {b}");
-        assert!(s.traction_error() <= ttol && s.numerical_error() <= 1e-10);
-        let panels = coupled::solve_panels_to(&k, 1e-11, ttol).unwrap();
-        let dt = traction_distance(&s, &panels);
-        let both = s.traction_error() + panels.traction_error();
-        eprintln!(
-            "b* {b} mu~ {mu}: 1 - c {:.3e}, tractions {dt:.2e} apart ({both:.2e})",
-            s.edge().one_minus_c
-        );
-        assert!(dt <= both, "b* {b}: tractions {dt:e} apart ({both:e})");
-        assert!(s.edge().distance(panels.edge()) <= s.numerical_error() + panels.numerical_error());
+        spectral_agrees_with_the_panels(&Coupling { bp: b, bq: b, mu }, ttol);
     }
+}
+
+/// COUPLED at c to 1e-10 and tractions to `ttol` is the spectral solver's answer, within its
+/// tolerances, and agrees with the panels' root search at the same traction tolerance: c
+/// and the tractions within the sum of both estimates.
+fn spectral_agrees_with_the_panels(k: &Coupling, ttol: f64) {
+    let label = format!("b* {} mu~ {}, tractions to {ttol:e}", k.bp, k.mu);
+    let s = coupled::solve_to(k, 1e-10, ttol).unwrap();
+    assert_eq!(s.regime(), "spectral", "{label}");
+    assert!(s.traction_error() <= ttol && s.numerical_error() <= 1e-10);
+    let panels = coupled::solve_panels_to(k, 1e-11, ttol).unwrap();
+    let dt = traction_distance(&s, &panels);
+    let both = s.traction_error() + panels.traction_error();
+    eprintln!(
+        "{label}: 1 - c {:.3e}, tractions {dt:.2e} apart ({both:.2e})",
+        s.edge().one_minus_c
+    );
+    assert!(dt <= both, "{label}: tractions {dt:e} apart ({both:e})");
+    let dc = s.edge().distance(panels.edge());
+    assert!(
+        dc <= s.numerical_error() + panels.numerical_error(),
+        "{label}: c {dc:e} apart"
+    );
 }
 
 /// [`weak_coupling_from_the_table`]'s tractions at the smallest b* (b* = 1e-4 and 3.756e-4,
@@ -452,20 +463,8 @@ fn weak_coupling_tractions_in_thin_slip_zones() {
 fn weak_coupling_tractions_at_the_smallest_b() {
     for b in [1e-4, 3.756e-4] {
         let (b, mu) = coupling_at(f64::atanh(b), 2.06);
-        let k = Coupling { bp: b, bq: b, mu };
         for ttol in [1e-8, 1e-10] {
-            let s = coupled::solve_to(&k, 1e-10, ttol).unwrap();
-            assert_eq!(s.regime(), "spectral", "b* {b}, {ttol:e}");
-            assert!(s.traction_error() <= ttol && s.numerical_error() <= 1e-10);
-            let panels = coupled::solve_panels_to(&k, 1e-11, ttol).unwrap();
-            let dt = traction_distance(&s, &panels);
-            let both = s.traction_error() + panels.traction_error();
-            assert!(
-                dt <= both,
-                "b* {b}, {ttol:e}: tractions {dt:e} apart ({both:e})"
-            );
-            let dc = s.edge().distance(panels.edge());
-            assert!(dc <= s.numerical_error() + panels.numerical_error());
+            spectral_agrees_with_the_panels(&Coupling { bp: b, bq: b, mu }, ttol);
         }
     }
 }
