@@ -703,26 +703,11 @@ fn at_fixed_edge(
         // each level with its coarser columns on the same rows (one assembly and one
         // factorisation for both); the estimate is the distance to the nearer of those and
         // the level below
-        // (the assembled system is kept only as long as the rounding check needs it)
-        let (coarse, cur, rounding) = {
-            let system = Assembled::new(k, c, w, sizes);
-            let (coarse, cur) = system.solve_pair().ok()?;
-            if !cur.sigma.is_finite() {
-                return None;
-            }
-            // a thin slip zone's rounding spread (as in [`rounding_spread`]): sigma's and
-            // the tractions' distance from the same system solved with its rows reversed
-            let rounding = if w < ROUNDING_BELOW {
-                let other = reversed_rows(&system)?;
-                Some((
-                    (other.sigma - cur.sigma).abs(),
-                    graded_distance(&other, &cur).parts,
-                ))
-            } else {
-                None
-            };
-            (coarse, cur, rounding)
-        };
+        let system = Assembled::new(k, c, w, sizes);
+        let (coarse, cur) = system.solve_pair().ok()?;
+        if !cur.sigma.is_finite() {
+            return None;
+        }
         if half == 2 * FIRST_LEVEL && first.base.is_none() {
             first.base = Some(Level {
                 lc,
@@ -731,9 +716,7 @@ fn at_fixed_edge(
         }
         // sigma's uncertainty: the larger of its differences from the coarser columns and
         // from the level below (both at lc)
-        let mut dsigma = (cur.sigma - coarse.sigma)
-            .abs()
-            .max(rounding.map_or(0.0, |s| s.0));
+        let mut dsigma = (cur.sigma - coarse.sigma).abs();
         let compared = level_distance(&cur, &coarse);
         let (mut dp, mut dq) = compared.parts;
         if let Some(b) = below.take() {
@@ -788,9 +771,29 @@ fn at_fixed_edge(
             // no level above takes the move below the tolerance
             return None;
         }
-        let (rp, rq) = rounding.map_or((0.0, 0.0), |s| s.1);
-        let parts = (SAFETY * (dp + rp) + moved.0, SAFETY * (dq + rq) + moved.1);
-        if parts.0 + delta * parts.1 <= traction_tol && cur.residual <= traction_tol {
+        let meets = |parts: (f64, f64)| {
+            parts.0 + delta * parts.1 <= traction_tol && cur.residual <= traction_tol
+        };
+        let mut parts = (SAFETY * dp + moved.0, SAFETY * dq + moved.1);
+        if meets(parts) && w < ROUNDING_BELOW {
+            // a thin slip zone's rounding spread, counted once the level meets its
+            // estimates (as the root search counts it, [`rounding_spread`]): the tractions'
+            // distance from the same system solved with its rows reversed, and sigma's,
+            // which widens lc's distance to the root (a failed second solve: no answer here)
+            parts = match reversed_rows(&system) {
+                Some(other) => {
+                    let (rp, rq) = graded_distance(&other, &cur).parts;
+                    let rsigma = (other.sigma - cur.sigma).abs();
+                    let moved = shift(
+                        first.measured,
+                        cur.sigma.abs() + SAFETY * dsigma.max(rsigma),
+                    );
+                    (SAFETY * (dp + rp) + moved.0, SAFETY * (dq + rq) + moved.1)
+                }
+                None => (f64::INFINITY, f64::INFINITY),
+            };
+        }
+        if meets(parts) {
             match verdict(compared.noise, k.mu, traction_tol, delta, parts) {
                 Verdict::Answer(parts) => {
                     return Some(Spectral {
