@@ -30,22 +30,25 @@ pub(crate) use system::Constants;
 use system::{Assembled, Fixed, Sizes};
 
 /// Smallest edge exponent g the bases serve (large friction, g ~ 1/(pi b* mu~)). Measured on
-/// the grid of `coupled::tests::small_g_against_the_panels` (b* = 0.35 .. 0.99 in 8 rows, the
-/// points with 1 - c >= 5e-6; c to 1e-10, tractions to 1e-8), each answer against the panels
-/// (docs/theory_spectral.md section 7):
+/// the grid of `coupled::tests::small_g_against_the_panels` (b* = 0.25 .. 0.99 in 9 rows, at
+/// the tabulated points the bases serve; c to 1e-10, tractions to 1e-8), each answer against
+/// the panels (docs/theory_spectral.md section 7), with the stick family's T_0 from (J2s):
 ///
-/// | g | served | answered | agreeing |
-/// |---|---|---|---|
-/// | 0.002 .. 0.03 | 72 | 72 | 72 |
-/// | 0.0015 | 8 | 7 | 7 |
-/// | 0.001 | 8 | 6 | 6 |
-/// | 0.0006 | 8 | 4 | 4 |
-/// | 0.0001 .. 0.0003 | 16 | 1 | 1 |
+/// | g | served | answered | agreeing | time (spectral) |
+/// |---|---|---|---|---|
+/// | 1e-3, 1.5e-3 | 18 | 18 | 18 | 0.2-9.4 ms, one 51 ms |
+/// | 5e-4, 7e-4 | 18 | 17 | 17 | 0.2-4.2 ms |
+/// | 2e-4, 3e-4 | 18 | 18 | 18 | 0.2-8.0 ms, two 63 ms |
+/// | 1e-4, 1.5e-4 | 18 | 15 | 15 | 0.5-19 ms, two 63 ms |
+/// | 1e-5, 1e-6 | 18 | 1 | 1 | |
 ///
-/// Each unanswered point cost 15-95 ms of levels before the panels answered. Below g = 0.002
-/// the levels' residual (R1) stalls at about 4e-13 / g^2 (4e-9 at g = 1e-4, at the panels' c);
-/// the slip zone's quotient family does not move that floor (section 7 names the candidates).
-const G_MIN: f64 = 0.002;
+/// (the 72 points from 1e-4 to 1.5e-3: median 0.8 ms against the panels' 9.7 ms; the 63 ms
+/// are b* = 0.35, 1 - c = 4.2e-5). Each
+/// unanswered point cost 13-110 ms of levels before the panels answered. Below about
+/// g = 2e-4 the stick q's two families, the Legendre polynomials and (1 - tau^2)^g P^(g,g),
+/// tend to the same functions: the coefficients grow like 1/g (largest 1e6 at g = 1e-7,
+/// b* = 0.75, against 1e3 at g = 1e-3) and sigma's rounding with them.
+const G_MIN: f64 = 2e-4;
 
 /// Thinnest slip zone the bases serve. With the stick poles' offsets exact (Z - tau from the
 /// points' offsets, `numerics::jacobi_transform::Point::minus`) and the nearest stick pole at
