@@ -1318,19 +1318,20 @@ fn spectral_agrees_with_the_panels_below_the_table_edge_on_a_grid() {
 }
 
 /// Small g (docs/theory_spectral.md, section 7): on a grid of b* = 0.25 .. 0.99 and
-/// g = 2.1e-4 .. 0.03 (mu~ = cot(pi g) / b*), at the tabulated points the bases serve (there
+/// g = 3.1e-5 .. 0.03 (mu~ = cot(pi g) / b*), at the tabulated points the bases serve (there
 /// 1 - c = 1.3e-7 .. 0.96), the spectral answers (c to 1e-10, tractions to 1e-8) against the panels: all
 /// agree within the sum of both estimates, and at most two points are left to the panels.
 /// Prints one line per point: answered or not, the distances over the sums of both
 /// estimates, the level, and both times.
 #[test]
-#[ignore = "slow tier: 117 points, each solved by both solvers (10-20 s)"]
+#[ignore = "slow tier: 135 points, each solved by both solvers (10-20 s)"]
 fn small_g_against_the_panels() {
     let (mut answered, mut served, mut agree) = (0, 0, 0);
     let (mut ts, mut tp) = (Vec::new(), Vec::new());
     let bs = [0.25, 0.35, 0.45, 0.55, 0.65, 0.75, 0.85, 0.95, 0.99];
     let gs = [
-        2.1e-4, 5e-4, 1e-3, 1.5e-3, 0.0021, 0.003, 0.005, 0.007, 0.01, 0.014, 0.02, 0.025, 0.03,
+        3.1e-5, 1e-4, 2.1e-4, 5e-4, 1e-3, 1.5e-3, 0.0021, 0.003, 0.005, 0.007, 0.01, 0.014, 0.02,
+        0.025, 0.03,
     ];
     for &b in &bs {
         for &g in &gs {
@@ -1395,13 +1396,15 @@ fn small_g_against_the_panels() {
 }
 
 /// The spectral solver below the first phase's g = 0.03 (docs/theory_spectral.md section 7):
-/// at g = 2.1e-4, 3e-4, 0.0021, 0.005 and 0.012 (b* = 0.45, 0.75, 0.65, 0.45, 0.85;
-/// c = 1 - 1.2e-3, 0.85, 0.95, 1 - 1.2e-3, 0.60) it answers, and c and the tractions agree
-/// with the panels' within the sum of both estimates. The first two need the stick
-/// family's T_0 without (J2)'s cancellation ((J2s)).
+/// at g = 3.1e-5, 2.1e-4, 3e-4, 0.0021, 0.005 and 0.012 (b* = 0.65, 0.45, 0.75, 0.65, 0.45,
+/// 0.85; c = 0.95, 1 - 1.2e-3, 0.85, 0.95, 1 - 1.2e-3, 0.60) it answers, and c and the
+/// tractions agree with the panels' within the sum of both estimates. The first three need
+/// the stick family's T_0 without (J2)'s cancellation ((J2s)) and the first its
+/// difference-quotient family ((Q6)).
 #[test]
 fn spectral_agrees_with_the_panels_at_small_g() {
     for (b, g) in [
+        (0.65, 3.1e-5),
         (0.45, 2.1e-4),
         (0.75, 3e-4),
         (0.65, 0.0021),

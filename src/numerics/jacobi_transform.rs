@@ -25,7 +25,7 @@ use std::f64::consts::PI;
 
 use super::cauchy::gap_over;
 use super::orthopoly::{JacobiRecurrence, jacobi_mass};
-use super::special::{Hyp2f1, SeriesRatios, exprel, tan_pi, zeta_int};
+use super::special::{Hyp2f1, SeriesRatios, exprel, symmetric_mass_tail, tan_pi};
 
 /// A real point y with its offsets 1 - y and 1 + y, each to full relative accuracy.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -539,14 +539,13 @@ fn inside(a: f64, b: f64, mass: f64, ends: &Ends, p: Point, w: Option<f64>) -> f
 /// Below this exponent, T_0 of the weight (1 - t^2)^g inside comes from (J2s): (J2)'s two
 /// terms each grow like 1 / (pi g) and cancel to O(1), an absolute error of eps / g (2e-11
 /// at g = 1e-5, measured against (J2s); they agree to 5e-15 at g = 0.04 and 1.5e-14 at 0.01).
-const SYMMETRIC_SERIES_BELOW: f64 = 0.05;
+pub(crate) const SYMMETRIC_SERIES_BELOW: f64 = 0.05;
 
 /// The constants of (J2s) for the weight (1 - t^2)^g, 0 < g < [`SYMMETRIC_SERIES_BELOW`]:
 /// with A = pi g cot(pi g), B = mu_0 (2g + 1) / 2 = e^beta,
 ///   pi T_0(y) = A L exprel(g L) - g gap(g) / g - (beta / g) exprel(beta) + 2 B S(z),
 /// L = ln((1 - y)(1 + y)), z = (1 - y) / 2, gap(g) / g of `cauchy::gap_over` (principal),
-///   beta / g = 2 ln 2 + sum_(k >= 2) (-1)^k zeta(k) (2 - 2^k) g^(k-1) / k
-/// (from ln Gamma(1 + x) = -gamma x + sum_(k >= 2) (-1)^k zeta(k) x^k / k), and
+///   beta / g = 2 ln 2 + g h(g) ([`symmetric_mass_tail`]), and
 ///   S(z) = sum_(n >= 1) (1 - 2g)_(n-1) / (1 - g)_n z^n = z / (1 - g) 2F1(1, 1 - 2g; 2 - g; z)
 /// ((F - 1) / (-2g) for Tricomi's F = 2F1(1, -2g; 1 - g; z), whose every term but the first
 /// carries the factor -2g). Every term is O(1) as g -> 0, where the sum tends to
@@ -566,18 +565,7 @@ struct SmallSymmetric {
 impl SmallSymmetric {
     fn new(g: f64) -> Self {
         let gap = gap_over(g, true);
-        let mut beta_over_g = 2.0 * std::f64::consts::LN_2;
-        let mut power = g;
-        for k in 2..=16 {
-            let sign = if k % 2 == 0 { 1.0 } else { -1.0 };
-            let zeta = zeta_int(k).unwrap_or(1.0);
-            let term = sign * zeta * (2.0 - (k as f64).exp2()) * power / k as f64;
-            beta_over_g += term;
-            if term.abs() < 1e-18 {
-                break;
-            }
-            power *= g;
-        }
+        let beta_over_g = 2.0 * std::f64::consts::LN_2 + g * symmetric_mass_tail(g);
         let beta = beta_over_g * g;
         SmallSymmetric {
             g,

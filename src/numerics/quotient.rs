@@ -16,22 +16,39 @@
 //!   t = -1, so Miller's normalisation does not apply).
 //!
 //! Points y > 1 do not occur (the slip zone's punch edge is its right end) and are not served.
+//!
+//! The stick zone's family ([`QuotientFamily::stick`], (Q6)-(Q8)): D_s(t) p_k(t) with
+//! D_s = ((1 - t^2)^g - 1) / g (-> ln(1 - t^2)) and p_k the orthonormal Legendre polynomials,
+//! which with the Legendre polynomials spans what they and (1 - t^2)^g P_k^(g,g) span. Its
+//! T_0 is odd in y and served on both sides: inside (Q6), outside by the series in
+//! x = (y - 1)/(y + 1) up to y = 3 and in 2/(1 + y) beyond (Q7); the same recurrence with
+//! the Legendre coefficients and the moments (Q8), Olver's form on both sides.
 
 use std::f64::consts::{LN_2, PI};
 
 use super::cauchy::{gap_over, pochhammer_tail};
-use super::jacobi_transform::{FORWARD_SPAN, JacobiFamily, Point, deepest};
+use super::jacobi_transform::{FORWARD_SPAN, JacobiFamily, Point, SYMMETRIC_SERIES_BELOW, deepest};
 use super::orthopoly::JacobiRecurrence;
-use super::special::{exprel, exprel2};
+use super::special::{exprel, exprel2, symmetric_mass_tail};
 
 /// Olver's form starts this far (in units of 1 / ln rho) above the top degree with T = 0
 /// there. The T_k decay only algebraically, so the error at degree k is about
 /// |T_top| rho^-(top - k): e^-40 = 4e-18 of it at the top degree.
 const OLVER_SPAN: f64 = 40.0;
 
+/// Which difference quotient.
+#[derive(Clone, Debug)]
+enum Kind {
+    /// The slip zone's D = (1 - t)^-g ((1 + t)^g - 1) / g with the p_k of (1 - t)^-g.
+    Slip,
+    /// The stick zone's D_s = ((1 - t^2)^g - 1) / g with the Legendre p_k ([`Symmetric`]).
+    Stick(Box<Symmetric>),
+}
+
 /// The family D p_k, k < n, for one g in (0, 1/2).
 #[derive(Clone, Debug)]
 pub(crate) struct QuotientFamily {
+    kind: Kind,
     g: f64,
     n: usize,
     /// The polynomials' family (-g, 0): its values give the p_k.
@@ -48,6 +65,7 @@ impl QuotientFamily {
         debug_assert!(g > 0.0 && g < 0.5 && n >= 1);
         let top = deepest(n, OLVER_SPAN) + 2;
         QuotientFamily {
+            kind: Kind::Slip,
             g,
             n,
             polys: JacobiFamily::new(-g, 0.0, n),
@@ -56,9 +74,27 @@ impl QuotientFamily {
         }
     }
 
+    /// The stick zone's family of `n` functions D_s p_k, D_s = ((1 - t^2)^g - 1) / g, p_k the
+    /// orthonormal Legendre polynomials, for 0 < g < [`SYMMETRIC_SERIES_BELOW`] ((Q6)-(Q8)).
+    pub(crate) fn stick(g: f64, n: usize) -> Self {
+        debug_assert!(g > 0.0 && g < SYMMETRIC_SERIES_BELOW && n >= 1);
+        let top = deepest(n, OLVER_SPAN) + 2;
+        let sym = Symmetric::new(g);
+        let moments = sym.moments(top);
+        QuotientFamily {
+            kind: Kind::Stick(Box::new(sym)),
+            g,
+            n,
+            polys: JacobiFamily::new(0.0, 0.0, n),
+            rec: JacobiRecurrence::new(top, 0.0, 0.0),
+            moments,
+        }
+    }
+
     /// Whether `other` is the same family (g and length).
     pub(crate) fn same_as(&self, other: &QuotientFamily) -> bool {
-        (self.g, self.n) == (other.g, other.n)
+        let stick = |f: &QuotientFamily| matches!(f.kind, Kind::Stick(_));
+        (self.g, self.n, stick(self)) == (other.g, other.n, stick(other))
     }
 
     /// Number of functions.
@@ -77,9 +113,18 @@ impl QuotientFamily {
         self.factors(p).0 * self.factors(p).1
     }
 
-    /// D's factors (1 - y)^-g and ((1 + y)^g - 1) / g.
+    /// D's factors (1 - y)^-g and ((1 + y)^g - 1) / g (the stick family's: 1 and D_s).
     pub(crate) fn factors(&self, p: Point) -> (f64, f64) {
         let g = self.g;
+        if let Kind::Stick(_) = self.kind {
+            let log = if p.omy == 0.0 || p.opy == 0.0 {
+                -1.0 / g
+            } else {
+                let l = p.omy.ln() + p.opy.ln();
+                l * exprel(g * l)
+            };
+            return (1.0, log);
+        }
         let log = if p.opy == 0.0 {
             -1.0 / g
         } else {
@@ -94,9 +139,13 @@ impl QuotientFamily {
         self.polys.values_weighted(p, w, out);
     }
 
-    /// T_0(y) for y in (-1, 1) (Q2) or y < -1 (Q3).
+    /// T_0(y) for y in (-1, 1) (Q2) or y < -1 (Q3); the stick family's at any y off the
+    /// ends ((Q6), (Q7)).
     pub(crate) fn t0(&self, p: Point) -> f64 {
         let g = self.g;
+        if let Kind::Stick(sym) = &self.kind {
+            return sym.t0(p);
+        }
         if p.inside() {
             // rho = (1 + y) / (1 - y), zeta = (1 - y) / 2
             let l_rho = (p.opy / p.omy).ln();
@@ -127,7 +176,7 @@ impl QuotientFamily {
         }
     }
 
-    /// T_k(y), k < n, y in (-1, 1) or y < -1.
+    /// T_k(y), k < n, y in (-1, 1) or y < -1 (the stick family's: any y off the ends).
     pub(crate) fn transforms(&self, p: Point, out: &mut [f64]) {
         let n = self.n;
         let out = &mut out[..n];
@@ -150,7 +199,7 @@ impl QuotientFamily {
         } else {
             // Olver: the equations k = 1 .. top - 1 for T_1 .. T_(top-1), with T_0 known and
             // T_top = 0 (the error at degree k < n falls like rho^-(top - k)), by elimination
-            // down the tridiagonal system (diagonally dominant for y < -1:
+            // down the tridiagonal system (diagonally dominant outside [-1, 1]:
             // |y - diag_k| > 1 >= off_(k-1) + off_k)
             let top = (n + (OLVER_SPAN / ln_rho).ceil() as usize).min(r.off.len());
             // equation k: off_(k-1) T_(k-1) - (y - diag_k) T_k + off_k T_(k+1) = m_k / pi
@@ -177,6 +226,129 @@ impl QuotientFamily {
             }
             out[1..n].copy_from_slice(&t[1..n]);
         }
+    }
+}
+
+/// Number of terms of the power series in z, x, zeta <= 1/2 ((Q6), (Q7)): 2^-64 of the
+/// first term left out.
+const SERIES_TERMS: usize = 64;
+
+/// The stick family's constants (docs/theory_spectral.md (J2s), (Q6)-(Q8)): with
+/// B = mu_0^(g,g) (2g + 1) / 2 = e^beta, gap(g) / g principal and not ([`gap_over`]),
+/// h = (beta / g - 2 ln 2) / g ([`symmetric_mass_tail`]),
+/// and the coefficients of the four series, each a difference quotient in g formed from
+/// logarithms that are O(g) to full relative accuracy (ln_1p), so that no 1/g is left.
+#[derive(Clone, Debug)]
+pub(crate) struct Symmetric {
+    g: f64,
+    gap: f64,
+    gap_not: f64,
+    beta_over_g: f64,
+    beta: f64,
+    b: f64,
+    h: f64,
+    /// Inside, S(z) = sum r_n z^n and (S - S_0) / g = sum d_n z^n (n >= 1; index n - 1).
+    r: Vec<f64>,
+    d: Vec<f64>,
+    /// For 1 < y <= 3, V(x) = sum v_n x^n and (V - V_0) / g = sum e_n x^n.
+    v: Vec<f64>,
+    e: Vec<f64>,
+    /// For y > 3, T_0 = -(1/pi) sum f_n zeta^(n+1), zeta = 2 / (1 + y) (n >= 0).
+    f: Vec<f64>,
+}
+
+impl Symmetric {
+    fn new(g: f64) -> Self {
+        let h = symmetric_mass_tail(g);
+        let beta_over_g = 2.0 * LN_2 + g * h;
+        let beta = beta_over_g * g;
+        let (mut r, mut d, mut v, mut e, mut f) = (vec![], vec![], vec![], vec![], vec![]);
+        // ln(n r_n) = sum_(j < n) [ln(1 - 2g/j) - ln(1 - g/j)] - ln(1 - g/n); the same for
+        // ln(n v_n) with ln(1 + g/j) in place of ln(1 - 2g/j); ln((n+1) f-coefficient) =
+        // ln(mu_0 / 2) + sum_(j < n) [ln(1 + g/(1+j)) - ln(1 + 2g/(2+j))]
+        let (mut lr, mut lv, mut lf) = (0.0, 0.0, beta - (2.0 * g).ln_1p());
+        for n in 1..=SERIES_TERMS {
+            let nf = n as f64;
+            let last = -(-g / nf).ln_1p();
+            for (l, list, quotient) in [(lr + last, &mut r, &mut d), (lv + last, &mut v, &mut e)] {
+                list.push(l.exp() / nf);
+                quotient.push(l.exp_m1() / (nf * g));
+            }
+            lr += (-2.0 * g / nf).ln_1p() - (-g / nf).ln_1p();
+            lv += (g / nf).ln_1p() - (-g / nf).ln_1p();
+            // f_(n-1): (n f) = exp(lf) / g ...
+            f.push(lf.exp_m1() / (nf * g));
+            lf += (g / nf).ln_1p() - (2.0 * g / (nf + 1.0)).ln_1p();
+        }
+        Symmetric {
+            g,
+            gap: gap_over(g, true),
+            gap_not: gap_over(g, false),
+            beta_over_g,
+            beta,
+            b: beta.exp(),
+            h,
+            r,
+            d,
+            v,
+            e,
+            f,
+        }
+    }
+
+    /// T_0 of D_s at y off the ends: (Q6) for 0 <= y < 1, (Q7) for y > 1, odd in y.
+    fn t0(&self, p: Point) -> f64 {
+        let g = self.g;
+        let series = |c: &[f64], z: f64| c.iter().rev().fold(0.0, |acc, &a| acc * z + a) * z;
+        let (p, sign) = if p.y < 0.0 {
+            (p.reflected(), -1.0)
+        } else {
+            (p, 1.0)
+        };
+        let common = -self.h - self.beta_over_g * self.beta_over_g * exprel2(self.beta);
+        let value = if p.inside() {
+            let z = 0.5 * p.omy;
+            let l = p.omy.ln() + p.opy.ln();
+            -g * self.gap * l * exprel(g * l) + l * l * exprel2(g * l) - self.gap
+                + common
+                + 2.0
+                    * (self.beta_over_g * exprel(self.beta) * series(&self.r, z)
+                        + series(&self.d, z))
+        } else if p.y <= 3.0 {
+            let x = -p.omy / p.opy;
+            let l = (-p.omy).ln() + p.opy.ln();
+            -self.gap_not * (g * l).exp() + l * l * exprel2(g * l) + common
+                - 2.0
+                    * (self.beta_over_g * exprel(self.beta) * series(&self.v, x)
+                        + series(&self.e, x))
+        } else {
+            let zeta = 2.0 / p.opy;
+            -series(&self.f, zeta)
+        };
+        sign * value / PI
+    }
+
+    /// m_k = int D_s p_k, k < top ((Q8)): m_0 = (mu_0 - 2) / g = 2 ((beta / g) exprel(beta) -
+    /// 2) / (2g + 1), odd k 0, and for k = 2m >= 2, from int (1 - t^2)^g P_2m = mu_0 (-g)_m
+    /// (1/2)_m / ((g + 3/2)_m m!) with (-g)_m / g = -(1 - g)_(m-1), times sqrt(4m + 1).
+    fn moments(&self, top: usize) -> Vec<f64> {
+        let g = self.g;
+        let mu0 = 2.0 * self.b / (2.0 * g + 1.0);
+        let mut out = vec![0.0; top];
+        out[0] = 2.0 * (self.beta_over_g * exprel(self.beta) - 2.0) / (2.0 * g + 1.0);
+        // the product -(1 - g)_(m-1) (1/2)_m / ((g + 3/2)_m m!)
+        let mut prod = -1.0;
+        for m in 1..top.div_ceil(2) {
+            let mf = m as f64;
+            if m > 1 {
+                prod *= mf - 1.0 - g;
+            }
+            prod *= (mf - 0.5) / ((g + 0.5 + mf) * mf);
+            if 2 * m < top {
+                out[2 * m] = (4.0 * mf + 1.0).sqrt() * mu0 * prod;
+            }
+        }
+        out
     }
 }
 
@@ -280,7 +452,23 @@ mod tests {
     fn moments_and_outside_transforms_match_quadrature() {
         for g in [1e-6, 1e-3, 0.01, 0.03, 0.1] {
             let n = 24;
-            let f = QuotientFamily::new(g, n);
+            moments_and_outside(&QuotientFamily::new(g, n), &[-1.3, -1.05, -3.0, -40.0]);
+        }
+    }
+
+    /// The stick family's moments, and its transforms on both sides outside (the series in
+    /// x up to y = 3, in zeta beyond).
+    #[test]
+    fn stick_moments_and_outside_transforms_match_quadrature() {
+        for g in [1e-6, 1e-3, 0.01, 0.049] {
+            let ys = [1.05, 1.3, 2.9, 3.1, 40.0, -1.3, -5.0];
+            moments_and_outside(&QuotientFamily::stick(g, 24), &ys);
+        }
+    }
+
+    fn moments_and_outside(f: &QuotientFamily, ys: &[f64]) {
+        {
+            let (g, n) = (f.g, f.n);
             let cuts = cuts_towards(&[-1.0, 0.0, 1.0]);
             let mut v = vec![0.0; n];
             let k_of = |k: usize, y: Option<f64>| {
@@ -306,7 +494,7 @@ mod tests {
                     f.moment(k)
                 );
             }
-            for y in [-1.3, -1.05, -3.0, -40.0] {
+            for &y in ys {
                 f.transforms(Point::new(y), &mut v);
                 for k in [0, 1, 5, 13, 23] {
                     let q = k_of(k, Some(y));
@@ -325,9 +513,22 @@ mod tests {
     /// with the pole cut into the panels), against the recurrence.
     #[test]
     fn inside_transforms_match_subtracted_quadrature() {
-        let n = 16;
         for g in [1e-6, 1e-3, 0.03, 0.1] {
-            let f = QuotientFamily::new(g, n);
+            inside(&QuotientFamily::new(g, 16));
+        }
+    }
+
+    #[test]
+    fn stick_inside_transforms_match_subtracted_quadrature() {
+        for g in [1e-6, 1e-3, 0.03, 0.049] {
+            inside(&QuotientFamily::stick(g, 16));
+        }
+    }
+
+    fn inside(f: &QuotientFamily) {
+        let n = f.n;
+        {
+            let g = f.g;
             for y in [-0.97, -0.4, 0.25, 0.9] {
                 let py = Point::new(y);
                 let mut vy = vec![0.0; n];
@@ -361,6 +562,60 @@ mod tests {
                     );
                 }
             }
+        }
+    }
+
+    /// The stick family's T_0 against mpmath ((T_0^(g,g) - T_0^(0,0)) / g, each by mpmath's
+    /// quadrature at 45 digits, the principal value subtracted inside), inside and on both
+    /// sides outside; y = 1 -+ 2^-20 with their offsets exact.
+    #[test]
+    fn stick_t0_matches_mpmath() {
+        const T0: [(f64, f64, f64); 30] = [
+            (1e-6, 0.3, -0.26081374663133977),
+            (1e-6, 0.9, -0.3138404766481284),
+            (1e-6, 0.9999990463256836, 26.774826912836442),
+            (1e-6, -0.5, 0.4183515695003038),
+            (1e-6, 1.0000009536743164, 28.345597106064492),
+            (1e-6, 1.5, 0.3862940374364411),
+            (1e-6, 2.9, 0.1470221152796743),
+            (1e-6, 3.5, 0.11840202150416249),
+            (1e-6, 40.0, 0.009771667407017997),
+            (1e-6, -1.2, -0.699458547323026),
+            (1e-3, 0.3, -0.26066257788691327),
+            (1e-3, 0.9, -0.3124762489260126),
+            (1e-3, 0.9999990463256836, 26.667670697291765),
+            (1e-3, -0.5, 0.4180284592341317),
+            (1e-3, 1.0000009536743164, 28.217911435716516),
+            (1e-3, 1.5, 0.38591781992433255),
+            (1e-3, 2.9, 0.14688949540061216),
+            (1e-3, 3.5, 0.11829593716912326),
+            (1e-3, 40.0, 0.009763031469065458),
+            (1e-3, -1.2, -0.69870409681166),
+            (0.03, 0.3, -0.2563766024942402),
+            (0.03, 0.9, -0.274387168114575),
+            (0.03, 0.9999990463256836, 23.808065127732252),
+            (0.03, -0.5, 0.40886379267237916),
+            (0.03, 1.0000009536743164, 24.8669590503747),
+            (0.03, 1.5, 0.37531528131249364),
+            (0.03, 2.9, 0.14314784383184073),
+            (0.03, 3.5, 0.11530266989308297),
+            (0.03, 40.0, 0.00951931638571119),
+            (0.03, -1.2, -0.6774788586204615),
+        ];
+        let tiny = 2f64.powi(-20);
+        for (g, y, v) in T0 {
+            let f = QuotientFamily::stick(g, 1);
+            let p = if (y - 1.0).abs() < 1e-5 {
+                let omy = if y < 1.0 { tiny } else { -tiny };
+                Point::offsets(omy, 2.0 - omy)
+            } else {
+                Point::new(y)
+            };
+            let t = f.t0(p);
+            assert!(
+                (t - v).abs() <= 4e-15 * (1.0 + v.abs()),
+                "g = {g}, y = {y}: {t} against {v}"
+            );
         }
     }
 }

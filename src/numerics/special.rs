@@ -142,6 +142,26 @@ const ZETA_NEGATIVE_ODD: [f64; 10] = [
     174_611.0 / 6600.0,
 ];
 
+/// h(g) = (beta / g - 2 ln 2) / g with beta = ln(2^(2g) Gamma(1 + g)^2 / Gamma(1 + 2g)), the
+/// logarithm of the mass of (1 - t^2)^g times (2g + 1)/2, for 0 <= g < 1/4: from
+/// ln Gamma(1 + x) = -gamma x + sum_(k >= 2) (-1)^k zeta(k) x^k / k (the gamma terms cancel),
+///   h = sum_(k >= 2) (-1)^k zeta(k) (2 - 2^k) g^(k-2) / k,
+/// to 1e-18 or zeta(16) (docs/theory_spectral.md (J2s), (Q6)).
+pub(crate) fn symmetric_mass_tail(g: f64) -> f64 {
+    let (mut h, mut power) = (0.0, 1.0);
+    for k in 2..=16 {
+        let sign = if k % 2 == 0 { 1.0 } else { -1.0 };
+        let zeta = zeta_int(k).unwrap_or(1.0);
+        let term = sign * zeta * (2.0 - f64::from(k).exp2()) * power / f64::from(k);
+        h += term;
+        if term.abs() < 1e-18 {
+            break;
+        }
+        power *= g;
+    }
+    h
+}
+
 /// zeta(n) for integer -19 <= n <= 16, n != 1 (None outside).
 pub(crate) fn zeta_int(n: i32) -> Option<f64> {
     match n {

@@ -7,7 +7,8 @@
 //!   1 / (Z - tau) + 1 / (Z + tau), Z = (1 + zeta_j) / c (B1);
 //! - q: odd Legendre polynomials, (1 - tau^2)^g times odd orthonormal P^(g,g), and the odd pole
 //!   pairs 1 / (Z - tau) - 1 / (Z + tau), alone and, in thin slip zones, times (1 - tau^2)^g
-//!   (B2).
+//!   (B2); below `system::QUOTIENT_BELOW` the weight ((1 - tau^2)^g - 1) / g with the odd
+//!   orthonormal Legendre polynomials in place of (1 - tau^2)^g P^(g,g) (the same span).
 //!
 //! Slip zone [c, 1], s = (2 x - c - 1) / (1 - c): p = (1 - s)^-g P^(-g,0) and
 //! (1 - s)^-g (1 + s)^g P^(-g,g), with poles 1 / (S_j - s), S_j = s(-(c + eta_j)), in both
@@ -17,7 +18,7 @@ use crate::numerics::jacobi_transform::{JacobiFamily, Point, pole_transform};
 use crate::numerics::quotient::QuotientFamily;
 
 /// A block's weighted polynomials: a Jacobi family, or below [`super::system::QUOTIENT_BELOW`]
-/// the slip zone's difference-quotient family (docs/theory_spectral.md, section 7).
+/// a zone's difference-quotient family (docs/theory_spectral.md, section 7).
 #[derive(Clone, Debug)]
 pub(crate) enum Family {
     Jacobi(JacobiFamily),

@@ -32,23 +32,25 @@ use system::{Assembled, Fixed, Sizes};
 /// Smallest edge exponent g the bases serve (large friction, g ~ 1/(pi b* mu~)). Measured on
 /// the grid of `coupled::tests::small_g_against_the_panels` (b* = 0.25 .. 0.99 in 9 rows, at
 /// the tabulated points the bases serve; c to 1e-10, tractions to 1e-8), each answer against
-/// the panels (docs/theory_spectral.md section 7), with the stick family's T_0 from (J2s):
+/// the panels (docs/theory_spectral.md section 7), with the stick q's quotient family
+/// ((Q6)-(Q8)):
 ///
-/// | g | served | answered | agreeing | time (spectral) |
-/// |---|---|---|---|---|
-/// | 1e-3, 1.5e-3 | 18 | 18 | 18 | 0.2-9.4 ms, one 51 ms |
-/// | 5e-4, 7e-4 | 18 | 17 | 17 | 0.2-4.2 ms |
-/// | 2e-4, 3e-4 | 18 | 18 | 18 | 0.2-8.0 ms, two 63 ms |
-/// | 1e-4, 1.5e-4 | 18 | 15 | 15 | 0.5-19 ms, two 63 ms |
-/// | 1e-5, 1e-6 | 18 | 1 | 1 | |
+/// | g | served | answered | agreeing |
+/// |---|---|---|---|
+/// | 3e-4, 1e-3 | 18 | 18 | 18 |
+/// | 1e-5 .. 1e-4 | 27 | 27 | 27 |
+/// | 1e-6 | 9 | 6 | 6 |
+/// | 1e-7 | 5 | 3 | 3 |
 ///
-/// (the 72 points from 1e-4 to 1.5e-3: median 0.8 ms against the panels' 9.7 ms; the 63 ms
-/// are b* = 0.35, 1 - c = 4.2e-5). Each
-/// unanswered point cost 13-110 ms of levels before the panels answered. Below about
-/// g = 2e-4 the stick q's two families, the Legendre polynomials and (1 - tau^2)^g P^(g,g),
-/// tend to the same functions: the coefficients grow like 1/g (largest 1e6 at g = 1e-7,
-/// b* = 0.75, against 1e3 at g = 1e-3) and sigma's rounding with them.
-const G_MIN: f64 = 2e-4;
+/// (median 1.4 ms against the panels' 9.6 ms; each unanswered point cost 34-100 ms before the
+/// panels answered.) On the table's 53 x 53 and 24 x 24 grids
+/// (`coupled::tests::spectral_agrees_with_the_panels_on_a_grid`,
+/// `tests::agrees_with_the_table_on_a_fine_grid`) with g >= 1e-5 served, 8 of 2193 served
+/// points did not answer, all at g = 1.1e-5 .. 2.8e-5 (b* = 0.33 .. 0.38, 1 - c = 1e-5 ..
+/// 1.5e-4); with g >= 3e-5, 1666 and 344 served points, all answered (before the quotient
+/// family, with g >= 0.002: 1114 and 229). Below, the large-friction terms of (E2), of size
+/// mu p ~ b p / (pi g), meet the traction tolerance in their rounding.
+const G_MIN: f64 = 3e-5;
 
 /// Thinnest slip zone the bases serve. With the stick poles' offsets exact (Z - tau from the
 /// points' offsets, `numerics::jacobi_transform::Point::minus`) and the nearest stick pole at

@@ -190,6 +190,14 @@ const DENSE_SLIP_DEGREES: [f64; 2] = [5.0, 3.0];
 /// that run), all 72 answered with the quotient and 71 with the power family; at g = 0.001,
 /// 6 of 8 answered, all agreeing with the panels, against 5 with the power family, one of
 /// them with c 1.7 times the sum of both estimates from the panels'.
+///
+/// The stick q's edge family switches at the same g ([`stick_edge_family`], (Q6)). On the
+/// same test's grid with g = 2.1e-4 .. 0.03 (9 x 13 points, (J2s) in both runs), switched at
+/// 0.03 or only below 0.002: 117 of 117 answered and agreeing either way (median 0.8 ms); on
+/// `coupled::tests::thin_slip_zones_at_small_g_agree_with_the_panels` the seven points
+/// answered at the same levels but one, b* = 0.25, mu~ = 100 (g = 0.0127, 1 - c = 1.4e-7):
+/// level 2 in 2 ms with the quotient, level 4 in 13 ms with the power family. Below about
+/// g = 2e-4 only the quotient answers (`spectral::G_MIN`).
 pub(crate) const QUOTIENT_BELOW: f64 = 0.03;
 
 /// Bonded columns X x^(2k), i X x^(2k+1), k < BONDED, where 1 - c < BONDED_BELOW (X1).
@@ -325,6 +333,17 @@ struct Factors {
     slip: [Option<(f64, f64)>; 2],
 }
 
+/// The stick q's edge family: (1 - tau^2)^g P^(g,g), or below [`QUOTIENT_BELOW`] the
+/// difference-quotient family of the same span with the Legendre block
+/// (`numerics::quotient::QuotientFamily::stick`, docs/theory_spectral.md (Q6)-(Q8)).
+fn stick_edge_family(g: f64, n: usize) -> Family {
+    if g < QUOTIENT_BELOW {
+        QuotientFamily::stick(g, n).into()
+    } else {
+        JacobiFamily::new(g, g, n).into()
+    }
+}
+
 /// The bases of both zones for one c.
 #[derive(Clone, Debug)]
 pub(crate) struct Basis {
@@ -369,7 +388,7 @@ impl Basis {
             // columns): elsewhere the unweighted pairs carry the stick q's continuation to
             // x = +-1 alone (docs/theory_spectral.md (B2), measured there)
             Block::new(
-                JacobiFamily::new(g, g, 2 * ng),
+                stick_edge_family(g, 2 * ng),
                 parity(ng, 1),
                 if sizes.bonded > 0 { &stick_z } else { &[] },
                 -1.0,
@@ -1202,9 +1221,15 @@ impl Fixed {
         let n1 = b.stick[1].len();
         let mut p = dot(&b.stick[0], None, 0);
         let mut q_plain = dot(&b.stick[1], None, q0);
-        // (1 - tau^2)^g = (c - x)^g (1 + tau)^g / c^g
-        let (_, opt) = b.stick[2].weight_factors(t);
-        let q_edge = dot(&b.stick[2], Some(opt / c.powf(g)), q0 + n1);
+        // (1 - tau^2)^g = (c - x)^g (1 + tau)^g / c^g; the quotient family's
+        // ((1 - tau^2)^g - 1) / g adds -1 / g times its polynomials to the plain part
+        let edge = t.opy.powf(g) / c.powf(g);
+        let q_edge = if b.stick[2].is_quotient() {
+            q_plain -= dot(&b.stick[2], Some(1.0 / g), q0 + n1);
+            dot(&b.stick[2], Some(edge / g), q0 + n1)
+        } else {
+            dot(&b.stick[2], Some(edge), q0 + n1)
+        };
         if let Some(bx) = &b.bonded {
             // the bonded columns are smooth at x = c from the stick side
             let n = bx.degree();

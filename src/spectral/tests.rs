@@ -363,3 +363,31 @@ fn measure_sigma_noise_in_thin_slip_zones() {
         }
     }
 }
+
+/// The stick side's split q = q_plain + (c - x)^g q_edge (the field's expansion at x = c)
+/// reproduces the solution's q with the quotient family too (its plain part takes -1/g of
+/// its polynomials), to the rounding that 1/g amplifies: measured 8e-13 at g = 1e-4 and
+/// 5.8e-12 at g = 0.01 (b* = 0.45, 1 - c = 1.2e-3; 2.8e-12 with the power family there).
+#[test]
+fn stick_split_reproduces_q_at_small_g() {
+    for (b, g) in [(0.75, 1e-4), (0.45, 0.01)] {
+        let mu = 1.0 / ((std::f64::consts::PI * g).tan() * b);
+        let k = consts(b, mu);
+        let (lc, bound) = crate::stick_edge_table::lookup(b, mu).expect("tabulated");
+        let s = from_edge(k, lc, bound, 1e-10, 1e-8, 1.0).expect("answered");
+        let c = s.edge.c;
+        for d in [0.5, 1e-2, 1e-5, 1e-9] {
+            let x = c * (1.0 - d);
+            let (p, q_plain, q_edge) = s.fixed.stick_split(x);
+            let q = q_plain + (c - x).powf(k.g) * q_edge;
+            let (p0, q0) = s.fixed.at(x);
+            eprintln!(
+                "b* = {b}, g = {g}, x = c (1 - {d:e}): p {:.1e}, q {:.1e}",
+                p - p0,
+                q - q0
+            );
+            assert!((p - p0).abs() <= 1e-13 * (1.0 + p0.abs()), "p at {x}");
+            assert!((q - q0).abs() <= 1e-13 / k.g * (1.0 + q0.abs()), "q at {x}");
+        }
+    }
+}
