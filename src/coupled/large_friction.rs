@@ -11,6 +11,10 @@
 //! slip zones. Its model error is the distance from the line through 2 M and 4 M (the
 //! quadratic's correction, a bound on its own error, which is of the next order in 1/M).
 //!
+//! COUPLED tries first the same extrapolation from four spectral solutions at lower friction
+//! ([`spectral_nodes`], [`LargeFriction::from_nodes`]) wherever g is below the spectral bases'
+//! smallest (`spectral::G_MIN`); the panels' nodes below serve where those do not answer.
+//!
 //! Thin slip zones (1 - c below about 1e-15, b* <~ 0.13) lose the panels' root search much
 //! earlier, once g < 1e-3 (b* = 0.1: mu~ >= 4.6e3, 1 - c ~ 1.4e-20; b* = 0.12: mu~ >= 2e5).
 //! There the same extrapolation runs from [`thin_base`], whose 4 M has g = [`THIN_NODE_G`].
@@ -47,9 +51,34 @@ pub(crate) fn nodes(m: f64) -> [f64; 3] {
     [m, 2.0 * m, 4.0 * m]
 }
 
-/// Share of the tolerances asked of each panel solution (the weights add up, in absolute
-/// value, to at most 5 at mu~ = infinity).
-const SHARE: f64 = 0.1;
+/// Share of the tolerances asked of each node's solution (the weights add up, in absolute
+/// value, to at most 5 at mu~ = infinity for the three nodes M, 2 M, 4 M, to 6.4 for the four
+/// of [`spectral_nodes`]).
+pub(crate) const SHARE: f64 = 0.1;
+
+/// The edge exponent g at the highest of the spectral nodes ([`spectral_nodes`]), above the
+/// bases' smallest (`spectral::G_MIN` = 3e-5). Measured with the four nodes at b* = 0.5 and
+/// 0.95 (c to 1e-11 and tractions to 1e-9 at each node; reference: this regime's panel
+/// extrapolation from mu~ = 1e6 at mu~ = 1e8, estimates 3.4e-15 and 2.5e-14), the cubic's
+/// distance from the reference in 1 - c and its model error (the distance from the quadratic
+/// through the upper three nodes) at mu~ = 1e8:
+///
+/// | g at 8 M | b* = 0.5: cubic, model | b* = 0.95: cubic, model |
+/// |---|---|---|
+/// | 4e-5 | 5.7e-15, 7.8e-14 | 1.6e-15, 2.4e-12 |
+/// | 1e-4 | 3.0e-15, 1.2e-12 | 7.6e-14, 3.8e-11 |
+///
+/// (at 4e-5 the nodes at b* = 0.5 asked to 1e-12 went to the panels). The model error grows
+/// like the cube of the lowest node's 1/mu~; 5e-5 keeps it near 5e-12 with the highest node
+/// a step above the bases' limit.
+const SPECTRAL_NODE_G: f64 = 5e-5;
+
+/// The four reduced frictions M, 2 M, 4 M, 8 M of the extrapolation from spectral solutions
+/// at b*, 8 M where g = [`SPECTRAL_NODE_G`] (b* = 0.5: M = 796).
+pub(crate) fn spectral_nodes(b: f64) -> [f64; 4] {
+    let top = 1.0 / (b * (std::f64::consts::PI * SPECTRAL_NODE_G).tan());
+    [0.125 * top, 0.25 * top, 0.5 * top, top]
+}
 
 /// The extrapolated solution.
 #[derive(Clone, Debug)]
@@ -59,12 +88,12 @@ pub(crate) struct LargeFriction {
     delta: f64,
     /// The reduced friction mu~.
     mu: f64,
-    /// The panels' solutions of the reduced problem at [`nodes`].
+    /// The solutions of the reduced problem at the nodes.
     sols: Vec<CoupledSolution>,
-    /// Lagrange weights in 1/mu~ at 1/mu~ of the quadratic (`quad`) and of the line through
-    /// 2 M and 4 M (`line`).
-    quad: [f64; 3],
-    line: [f64; 3],
+    /// Lagrange weights in 1/mu~ at 1/mu~ of the polynomial through all nodes (`quad`) and
+    /// through all but the lowest (`line`).
+    quad: Vec<f64>,
+    line: Vec<f64>,
     edge: StickEdge,
     error: f64,
     traction_error: f64,
@@ -85,20 +114,22 @@ pub(crate) fn lagrange<const N: usize>(y: f64, nodes: [Option<f64>; N]) -> [f64;
     w
 }
 
-/// The stick edge at reduced friction `mu` extrapolated from the `edges` at [`nodes`]`(m)`
-/// (their errors `errors`): the edge, its error (the errors times the weights' magnitudes,
-/// plus the distance from the line through 2 M and 4 M) and the Lagrange weights of the
-/// quadratic and of the line.
-pub(crate) fn extrapolate_edge(
+/// The stick edge at reduced friction `mu` extrapolated from the `edges` at the reduced
+/// frictions `mus` (their errors `errors`), the polynomial in 1/mu~ through all of them: the
+/// edge, its error (the errors times the weights' magnitudes, plus the distance from the
+/// polynomial through all nodes but the lowest) and the Lagrange weights of both.
+pub(crate) fn extrapolate_edge<const N: usize>(
     mu: f64,
-    m: f64,
-    edges: [StickEdge; 3],
-    errors: [f64; 3],
-) -> (StickEdge, f64, [[f64; 3]; 2]) {
-    let y = nodes(m).map(|m| Some(1.0 / m));
+    mus: [f64; N],
+    edges: [StickEdge; N],
+    errors: [f64; N],
+) -> (StickEdge, f64, [[f64; N]; 2]) {
+    let y = mus.map(|m| Some(1.0 / m));
     let quad = lagrange(1.0 / mu, y);
-    let line = lagrange(1.0 / mu, [None, y[1], y[2]]);
-    let combine = |weights: [f64; 3], f: fn(&StickEdge) -> f64| -> f64 {
+    let mut upper = y;
+    upper[0] = None;
+    let line = lagrange(1.0 / mu, upper);
+    let combine = |weights: [f64; N], f: fn(&StickEdge) -> f64| -> f64 {
         weights.iter().zip(&edges).map(|(w, e)| w * f(e)).sum()
     };
     let (c, w) = (combine(quad, |e| e.c), combine(quad, |e| e.one_minus_c));
@@ -118,7 +149,8 @@ impl LargeFriction {
     /// reach is reported in the estimates; the caller compares).
     pub(crate) fn new(k: &Coupling, m: f64, tol: f64, traction_tol: f64) -> Result<Self> {
         let (r, delta) = k.reduced();
-        let sols = nodes(m)
+        let mus = nodes(m);
+        let sols = mus
             .iter()
             .map(|&mu| {
                 let at = Coupling { mu, ..r };
@@ -130,46 +162,61 @@ impl LargeFriction {
                 )
             })
             .collect::<Result<Vec<_>>>()?;
+        let sols: [CoupledSolution; 3] = sols.try_into().expect("three nodes");
+        Ok(Self::from_nodes(k, mus, sols))
+    }
+
+    /// The solution of `k` (bp > 0) extrapolated from the reduced problem's solutions `sols`
+    /// at the reduced frictions `mus` (increasing, below k's): the polynomial in 1/mu~ through
+    /// all of them, its error estimates the distance from the polynomial through all but the
+    /// lowest node, plus the nodes' own estimates times the weights' magnitudes.
+    pub(crate) fn from_nodes<const N: usize>(
+        k: &Coupling,
+        mus: [f64; N],
+        sols: [CoupledSolution; N],
+    ) -> Self {
+        let (r, delta) = k.reduced();
         let (edge, error, [quad, line]) = extrapolate_edge(
             r.mu,
-            m,
-            [0, 1, 2].map(|i| sols[i].edge),
-            [0, 1, 2].map(|i| sols[i].error),
+            mus,
+            std::array::from_fn(|i| sols[i].edge),
+            std::array::from_fn(|i| sols[i].error),
         );
-        let combine = |weights: [f64; 3], f: &dyn Fn(&CoupledSolution) -> f64| {
+        let combine = |weights: &[f64], f: &dyn Fn(&CoupledSolution) -> f64| {
             weights
                 .iter()
                 .zip(&sols)
                 .map(|(w, s)| w * f(s))
                 .sum::<f64>()
         };
-        let own_tractions = combine(quad.map(f64::abs), &|s| s.traction_error);
-        let line_edge = combine(line, &|s| s.edge.c);
+        let abs: Vec<f64> = quad.iter().map(|w| w.abs()).collect();
+        let own_tractions = combine(&abs, &|s| s.traction_error);
+        let line_edge = combine(&line, &|s| s.edge.c);
         let mut s = LargeFriction {
             coupling: *k,
             delta,
             mu: r.mu,
-            sols,
-            quad,
-            line,
+            sols: sols.into(),
+            quad: quad.into(),
+            line: line.into(),
             edge,
             error,
             traction_error: 0.0,
         };
         let (dp, dq) = traction_parts(
-            |x| s.tractions(s.quad, x),
-            |x| s.tractions(s.line, x),
+            |x| s.tractions(&s.quad, x),
+            |x| s.tractions(&s.line, x),
             [edge.c, line_edge],
         );
         s.traction_error = own_tractions + dp + delta * dq;
-        Ok(s)
+        s
     }
 
     /// (p, q) at 0 <= x < 1 of the combination with `weights` (its own stick edge). Next to
     /// x = 1 the points are placed by u = 1 - x: in thin slip zones c and the c_i
     /// round to 1, and the combinations' c, off by a few ulps of 1, would move x c_i / c by
     /// several layer widths (u_i = (c_i u + w_i - w) / c there instead).
-    fn tractions(&self, weights: [f64; 3], x: f64) -> (f64, f64) {
+    fn tractions(&self, weights: &[f64], x: f64) -> (f64, f64) {
         let pairs = || weights.iter().zip(&self.sols);
         let c: f64 = pairs().map(|(a, s)| a * s.edge.c).sum();
         let w: f64 = pairs().map(|(a, s)| a * s.edge.one_minus_c).sum();
@@ -221,7 +268,7 @@ impl Profile for LargeFriction {
     }
 
     fn half_line_tractions(&self, x: f64) -> (f64, f64) {
-        self.tractions(self.quad, x)
+        self.tractions(&self.quad, x)
     }
 }
 
@@ -264,12 +311,14 @@ impl Expand for LargeFriction {
 mod tests {
     use super::*;
     use crate::coupled::tests::check_solution;
-    use crate::coupled::{Regime, solve_to};
+    use crate::coupled::{Regime, solve_panels_to, solve_to};
     use crate::problem::traction_distance;
 
-    /// Continuity at a switch mu~ = `at`: just below it the panels solved at mu~ itself,
-    /// just above it the extrapolation (a different computation: one solve instead of three
-    /// and no extrapolation) agree on c and on the tractions within their estimates.
+    /// Continuity at a switch mu~ = `at` of the panels' regimes (`solve_panels_to`; COUPLED
+    /// extrapolates from spectral nodes there, [`LargeFriction::from_nodes`]): just below it
+    /// the panels solved at mu~ itself, just above it the extrapolation (a different
+    /// computation: one solve instead of three and no extrapolation) agree on c and on the
+    /// tractions within their estimates.
     fn continuous_at(b: f64, at: f64) {
         let below = Coupling {
             bp: b,
@@ -280,8 +329,8 @@ mod tests {
             mu: at * (1.0 + 1e-12),
             ..below
         };
-        let p = solve_to(&below, 1e-10, 1e-10).unwrap();
-        let l = solve_to(&above, 1e-10, 1e-10).unwrap();
+        let p = solve_panels_to(&below, 1e-10, 1e-10).unwrap();
+        let l = solve_panels_to(&above, 1e-10, 1e-10).unwrap();
         assert!(matches!(p.regime, Regime::Panels(_)));
         assert!(matches!(l.regime, Regime::LargeFriction(_)));
         let dc = (p.edge().c - l.edge().c).abs();

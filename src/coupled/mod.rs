@@ -874,6 +874,9 @@ fn solve_with(
     if spectral && let Some(s) = spectral_from_table(k, tol, traction_tol) {
         return Ok(s);
     }
+    if spectral && let Some(s) = spectral_extrapolation(k, tol, traction_tol) {
+        return Ok(s);
+    }
     let tol_asked = tol;
     let mut tol = tol.min((traction_tol / TRACTION_PER_C).max(TIGHTEST));
     if traction_tol.is_finite() {
@@ -916,6 +919,40 @@ fn solve_with(
 /// tolerances (the panels answer there).
 fn spectral_from_table(k: &Coupling, tol: f64, traction_tol: f64) -> Option<CoupledSolution> {
     spectral_from(k, tol, traction_tol, true)
+}
+
+/// Large friction below the bases' smallest edge exponent (`spectral::G_MIN`): the
+/// extrapolation in 1/mu~ ([`large_friction`]) from the spectral solutions at the four nodes
+/// of [`large_friction::spectral_nodes`] (each asked [`large_friction::SHARE`] of the
+/// tolerances); None where a node does not answer or the extrapolation's estimates miss the
+/// tolerances (the panels' regimes answer there).
+fn spectral_extrapolation(k: &Coupling, tol: f64, traction_tol: f64) -> Option<CoupledSolution> {
+    if k.bp == 0.0 {
+        return None;
+    }
+    let (r, delta) = k.reduced();
+    let mus = large_friction::spectral_nodes(r.bp);
+    if r.edge_exponent() >= crate::spectral::G_MIN || r.mu <= mus[3] {
+        return None;
+    }
+    let share = large_friction::SHARE;
+    let mut sols = Vec::with_capacity(mus.len());
+    for mu in mus {
+        let at = Coupling { mu, ..r };
+        sols.push(spectral_from_table(
+            &at,
+            share * tol,
+            share * traction_tol / delta.max(1.0),
+        )?);
+    }
+    let l = LargeFriction::from_nodes(k, mus, sols.try_into().ok()?);
+    if l.numerical_error() > tol || l.traction_error() > traction_tol {
+        return None;
+    }
+    let order = l.order();
+    let mut s = CoupledSolution::from_profile(l, |l| Regime::LargeFriction(Box::new(l)));
+    s.order = order;
+    Some(s)
 }
 
 /// [`spectral_from_table`], with the table left out where not `table`: from Spence's stick
@@ -1133,8 +1170,12 @@ fn table_edge(k: &Coupling) -> Option<(StickEdge, f64)> {
     let extrapolated = |m: f64| {
         let [e0, e1, e2] = large_friction::nodes(m).map(at);
         let (e0, e1, e2) = (e0?, e1?, e2?);
-        let (edge, error, _) =
-            large_friction::extrapolate_edge(r.mu, m, [e0.0, e1.0, e2.0], [e0.1, e1.1, e2.1]);
+        let (edge, error, _) = large_friction::extrapolate_edge(
+            r.mu,
+            large_friction::nodes(m),
+            [e0.0, e1.0, e2.0],
+            [e0.1, e1.1, e2.1],
+        );
         Some((edge, error))
     };
     let from_top = || {

@@ -1460,3 +1460,38 @@ fn small_stick_zones_agree_with_the_panels_pointwise() {
         );
     }
 }
+
+/// Large friction below the bases' smallest g (`spectral::G_MIN`): the extrapolation in 1/mu~
+/// from four spectral solutions ([`spectral_extrapolation`]) against the panels at mu~ = 1e5
+/// and 1e6 (g = 8e-7 .. 1.3e-5) and against the panels' own extrapolation from mu~ = 1e6 at
+/// 1e9 (an independent discretisation at every node): c and the tractions within the sum of
+/// both estimates, and COUPLED answers with it.
+#[test]
+fn large_friction_from_spectral_nodes_agrees_with_the_panels() {
+    for b in [0.5, 0.7, 0.95, 0.99] {
+        for mu in [1e5, 1e6, 1e9] {
+            let k = Coupling { bp: b, bq: b, mu };
+            let t = std::time::Instant::now();
+            let s = spectral_extrapolation(&k, 1e-10, 1e-8).expect("extrapolated");
+            let ts = t.elapsed().as_secs_f64() * 1e3;
+            let t = std::time::Instant::now();
+            let p = solve_panels_to(&k, 1e-10, 1e-8).expect("panels");
+            let tp = t.elapsed().as_secs_f64() * 1e3;
+            eprintln!(
+                "({b}, {mu:e}): 1 - c {:.3e}, c apart {:.1e} (estimates {:.1e} + {:.1e}), \
+                 tractions apart {:.1e} ({:.1e} + {:.1e}); {ts:.1} ms against {tp:.1} ms ({})",
+                s.edge().one_minus_c,
+                s.edge().distance(p.edge()),
+                s.error,
+                p.error,
+                crate::problem::traction_distance(&s, &p),
+                s.traction_error,
+                p.traction_error,
+                p.regime()
+            );
+            assert_agree(&s, &p, b, mu);
+            let via = solve_to(&k, 1e-10, 1e-8).expect("COUPLED");
+            assert_eq!(via.edge().c.to_bits(), s.edge().c.to_bits(), "({b}, {mu})");
+        }
+    }
+}

@@ -50,7 +50,7 @@ use system::{Assembled, Fixed, Sizes};
 /// 1.5e-4); with g >= 3e-5, 1666 and 344 served points, all answered (before the quotient
 /// family, with g >= 0.002: 1114 and 229). Below, the large-friction terms of (E2), of size
 /// mu p ~ b p / (pi g), meet the traction tolerance in their rounding.
-const G_MIN: f64 = 3e-5;
+pub(crate) const G_MIN: f64 = 3e-5;
 
 /// Thinnest slip zone the bases serve. With the stick poles' offsets exact (Z - tau from the
 /// points' offsets, `numerics::jacobi_transform::Point::minus`) and the nearest stick pole at
