@@ -90,10 +90,10 @@ pub(crate) struct LargeFriction {
     mu: f64,
     /// The solutions of the reduced problem at the nodes.
     sols: Vec<CoupledSolution>,
-    /// Lagrange weights in 1/mu~ at 1/mu~ of the polynomial through all nodes (`quad`) and
-    /// through all but the lowest (`line`).
-    quad: Vec<f64>,
-    line: Vec<f64>,
+    /// Lagrange weights in 1/mu~ at 1/mu~ of the polynomial through all nodes (`all`) and
+    /// through all but the lowest (`upper`).
+    all: Vec<f64>,
+    upper: Vec<f64>,
     edge: StickEdge,
     error: f64,
     traction_error: f64,
@@ -125,22 +125,22 @@ pub(crate) fn extrapolate_edge<const N: usize>(
     errors: [f64; N],
 ) -> (StickEdge, f64, [[f64; N]; 2]) {
     let y = mus.map(|m| Some(1.0 / m));
-    let quad = lagrange(1.0 / mu, y);
-    let mut upper = y;
-    upper[0] = None;
-    let line = lagrange(1.0 / mu, upper);
+    let all = lagrange(1.0 / mu, y);
+    let mut above = y;
+    above[0] = None;
+    let upper = lagrange(1.0 / mu, above);
     let combine = |weights: [f64; N], f: fn(&StickEdge) -> f64| -> f64 {
         weights.iter().zip(&edges).map(|(w, e)| w * f(e)).sum()
     };
-    let (c, w) = (combine(quad, |e| e.c), combine(quad, |e| e.one_minus_c));
+    let (c, w) = (combine(all, |e| e.c), combine(all, |e| e.one_minus_c));
     let (edge, model) = if c < 0.5 {
-        (StickEdge::from_c(c), (c - combine(line, |e| e.c)).abs())
+        (StickEdge::from_c(c), (c - combine(upper, |e| e.c)).abs())
     } else {
-        let line_w = combine(line, |e| e.one_minus_c);
-        (StickEdge::from_one_minus_c(w), (w - line_w).abs())
+        let upper_w = combine(upper, |e| e.one_minus_c);
+        (StickEdge::from_one_minus_c(w), (w - upper_w).abs())
     };
-    let own: f64 = quad.iter().zip(errors).map(|(q, e)| q.abs() * e).sum();
-    (edge, own + model, [quad, line])
+    let own: f64 = all.iter().zip(errors).map(|(q, e)| q.abs() * e).sum();
+    (edge, own + model, [all, upper])
 }
 
 impl LargeFriction {
@@ -176,7 +176,7 @@ impl LargeFriction {
         sols: [CoupledSolution; N],
     ) -> Self {
         let (r, delta) = k.reduced();
-        let (edge, error, [quad, line]) = extrapolate_edge(
+        let (edge, error, [all, upper]) = extrapolate_edge(
             r.mu,
             mus,
             std::array::from_fn(|i| sols[i].edge),
@@ -189,24 +189,24 @@ impl LargeFriction {
                 .map(|(w, s)| w * f(s))
                 .sum::<f64>()
         };
-        let abs: Vec<f64> = quad.iter().map(|w| w.abs()).collect();
+        let abs: Vec<f64> = all.iter().map(|w| w.abs()).collect();
         let own_tractions = combine(&abs, &|s| s.traction_error);
-        let line_edge = combine(&line, &|s| s.edge.c);
+        let upper_edge = combine(&upper, &|s| s.edge.c);
         let mut s = LargeFriction {
             coupling: *k,
             delta,
             mu: r.mu,
             sols: sols.into(),
-            quad: quad.into(),
-            line: line.into(),
+            all: all.into(),
+            upper: upper.into(),
             edge,
             error,
             traction_error: 0.0,
         };
         let (dp, dq) = traction_parts(
-            |x| s.tractions(&s.quad, x),
-            |x| s.tractions(&s.line, x),
-            [edge.c, line_edge],
+            |x| s.tractions(&s.all, x),
+            |x| s.tractions(&s.upper, x),
+            [edge.c, upper_edge],
         );
         s.traction_error = own_tractions + dp + delta * dq;
         s
@@ -268,17 +268,18 @@ impl Profile for LargeFriction {
     }
 
     fn half_line_tractions(&self, x: f64) -> (f64, f64) {
-        self.tractions(&self.quad, x)
+        self.tractions(&self.all, x)
     }
 }
 
 impl LargeFriction {
-    /// The highest polynomial order per panel of the three panel solutions.
+    /// The highest order (panels: polynomial order per panel; spectral: level) of the node
+    /// solutions.
     pub(crate) fn order(&self) -> usize {
         self.sols.iter().map(|s| s.order).max().unwrap_or(0)
     }
 
-    /// The unknowns of the largest of the three panel systems.
+    /// The unknowns of the largest of the node solutions' systems.
     pub(crate) fn unknowns(&self) -> usize {
         self.sols.iter().map(|s| s.unknowns()).max().unwrap_or(0)
     }

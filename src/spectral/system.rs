@@ -40,7 +40,7 @@ pub(crate) struct Constants {
 pub(crate) struct Sizes {
     /// Even Legendre polynomials in the stick p, odd ones in the stick q.
     pub(crate) legendre: usize,
-    /// Odd P^(g,g) in the stick q.
+    /// Odd P^(g,g) (below [`QUOTIENT_BELOW`] the quotient family's) in the stick q.
     pub(crate) stick_g: usize,
     /// P^(-g,0) and P^(-g,g) on the slip zone.
     pub(crate) slip: [usize; 2],
@@ -353,7 +353,8 @@ pub(crate) struct Basis {
     /// The sizes the bases were built with (for the tests to assemble a level again).
     #[cfg(test)]
     pub(crate) sizes: Sizes,
-    /// Stick zone: p (even), q (odd Legendre), q ((1 - tau^2)^g P^(g,g), odd).
+    /// Stick zone: p (even), q (odd Legendre), q ((1 - tau^2)^g P^(g,g), odd; below
+    /// [`QUOTIENT_BELOW`] ((1 - tau^2)^g - 1) / g times odd Legendre).
     stick: [Block; 3],
     /// Slip zone: (1 - s)^-g P^(-g,0), (1 - s)^-g (1 + s)^g P^(-g,g).
     slip: [Block; 2],
