@@ -550,20 +550,22 @@ pub(crate) const SYMMETRIC_SERIES_BELOW: f64 = 0.05;
 /// ((F - 1) / (-2g) for Tricomi's F = 2F1(1, -2g; 1 - g; z), whose every term but the first
 /// carries the factor -2g). Every term is O(1) as g -> 0, where the sum tends to
 /// ln((1 - y) / (1 + y)).
+/// The stick zone's quotient family (`numerics::quotient`, (Q6)) builds on the same
+/// constants and S.
 #[derive(Clone, Debug)]
-struct SmallSymmetric {
-    g: f64,
+pub(crate) struct SmallSymmetric {
+    pub(crate) g: f64,
     /// A, gap(g) / g, beta / g, beta, B.
     cot: f64,
-    gap: f64,
-    beta_over_g: f64,
-    beta: f64,
-    b: f64,
+    pub(crate) gap: f64,
+    pub(crate) beta_over_g: f64,
+    pub(crate) beta: f64,
+    pub(crate) b: f64,
     series: SeriesRatios,
 }
 
 impl SmallSymmetric {
-    fn new(g: f64) -> Self {
+    pub(crate) fn new(g: f64) -> Self {
         let gap = gap_over(g, true);
         let beta_over_g = 2.0 * std::f64::consts::LN_2 + g * symmetric_mass_tail(g);
         let beta = beta_over_g * g;
@@ -578,11 +580,15 @@ impl SmallSymmetric {
         }
     }
 
+    /// S(z) for 0 <= z <= 1/2.
+    pub(crate) fn s(&self, z: f64) -> f64 {
+        z / (1.0 - self.g) * self.series.sum(z)
+    }
+
     /// T_0(y) for 0 <= y < 1 (z <= 1/2).
     fn t0(&self, p: Point) -> f64 {
         let g = self.g;
-        let z = 0.5 * p.omy;
-        let s = z / (1.0 - g) * self.series.sum(z);
+        let s = self.s(0.5 * p.omy);
         let l = p.omy.ln() + p.opy.ln();
         (self.cot * l * exprel(g * l) - g * self.gap - self.beta_over_g * exprel(self.beta)
             + 2.0 * self.b * s)

@@ -27,7 +27,9 @@
 use std::f64::consts::{LN_2, PI};
 
 use super::cauchy::{gap_over, pochhammer_tail};
-use super::jacobi_transform::{FORWARD_SPAN, JacobiFamily, Point, SYMMETRIC_SERIES_BELOW, deepest};
+use super::jacobi_transform::{
+    FORWARD_SPAN, JacobiFamily, Point, SYMMETRIC_SERIES_BELOW, SmallSymmetric, deepest,
+};
 use super::orthopoly::JacobiRecurrence;
 use super::special::{exprel, exprel2, symmetric_mass_tail};
 
@@ -110,7 +112,8 @@ impl QuotientFamily {
     /// D(y) for y in [-1, 1): (1 - y)^-g ln(1 + y) exprel(g ln(1 + y)), to full relative
     /// accuracy for every g (-1 / g (1 - y)^-g at y = -1).
     pub(crate) fn weight(&self, p: Point) -> f64 {
-        self.factors(p).0 * self.factors(p).1
+        let (a, b) = self.factors(p);
+        a * b
     }
 
     /// D's factors (1 - y)^-g and ((1 + y)^g - 1) / g (the stick family's: 1 and D_s).
@@ -240,15 +243,14 @@ const SERIES_TERMS: usize = 64;
 /// logarithms that are O(g) to full relative accuracy (ln_1p), so that no 1/g is left.
 #[derive(Clone, Debug)]
 pub(crate) struct Symmetric {
-    g: f64,
-    gap: f64,
+    /// g, gap(g) / g, beta, B and S(z) of (J2s).
+    base: SmallSymmetric,
     gap_not: f64,
-    beta_over_g: f64,
-    beta: f64,
-    b: f64,
-    h: f64,
-    /// Inside, S(z) = sum r_n z^n and (S - S_0) / g = sum d_n z^n (n >= 1; index n - 1).
-    r: Vec<f64>,
+    /// (B - 1) / g = (beta / g) exprel(beta), and -h - (beta / g)^2 exprel2(beta), the
+    /// constant part of (Q6) and (Q7).
+    b_step: f64,
+    common: f64,
+    /// Inside, (S - S_0) / g = sum d_n z^n (n >= 1; index n - 1).
     d: Vec<f64>,
     /// For 1 < y <= 3, V(x) = sum v_n x^n and (V - V_0) / g = sum e_n x^n.
     v: Vec<f64>,
@@ -259,36 +261,32 @@ pub(crate) struct Symmetric {
 
 impl Symmetric {
     fn new(g: f64) -> Self {
+        let base = SmallSymmetric::new(g);
         let h = symmetric_mass_tail(g);
-        let beta_over_g = 2.0 * LN_2 + g * h;
-        let beta = beta_over_g * g;
-        let (mut r, mut d, mut v, mut e, mut f) = (vec![], vec![], vec![], vec![], vec![]);
-        // ln(n r_n) = sum_(j < n) [ln(1 - 2g/j) - ln(1 - g/j)] - ln(1 - g/n); the same for
-        // ln(n v_n) with ln(1 + g/j) in place of ln(1 - 2g/j); ln((n+1) f-coefficient) =
-        // ln(mu_0 / 2) + sum_(j < n) [ln(1 + g/(1+j)) - ln(1 + 2g/(2+j))]
-        let (mut lr, mut lv, mut lf) = (0.0, 0.0, beta - (2.0 * g).ln_1p());
+        let (mut d, mut v, mut e, mut f) = (vec![], vec![], vec![], vec![]);
+        // ln(n r_n) = sum_(j < n) [ln(1 - 2g/j) - ln(1 - g/j)] - ln(1 - g/n) for S's
+        // coefficients r_n; the same for ln(n v_n) with ln(1 + g/j) in place of
+        // ln(1 - 2g/j); ln((n + 1) (mu_0 / 2) (g + 1)_n / (2g + 2)_n) = ln(mu_0 / 2) +
+        // sum_(j < n) [ln(1 + g/(1+j)) - ln(1 + 2g/(2+j))]
+        let (mut lr, mut lv, mut lf) = (0.0, 0.0, base.beta - (2.0 * g).ln_1p());
         for n in 1..=SERIES_TERMS {
             let nf = n as f64;
             let last = -(-g / nf).ln_1p();
-            for (l, list, quotient) in [(lr + last, &mut r, &mut d), (lv + last, &mut v, &mut e)] {
-                list.push(l.exp() / nf);
-                quotient.push(l.exp_m1() / (nf * g));
-            }
+            d.push((lr + last).exp_m1() / (nf * g));
+            v.push((lv + last).exp() / nf);
+            e.push((lv + last).exp_m1() / (nf * g));
             lr += (-2.0 * g / nf).ln_1p() - (-g / nf).ln_1p();
             lv += (g / nf).ln_1p() - (-g / nf).ln_1p();
-            // f_(n-1): (n f) = exp(lf) / g ...
+            // f_(n-1), from the logarithm at n - 1
             f.push(lf.exp_m1() / (nf * g));
             lf += (g / nf).ln_1p() - (2.0 * g / (nf + 1.0)).ln_1p();
         }
+        let bg = base.beta_over_g;
         Symmetric {
-            g,
-            gap: gap_over(g, true),
             gap_not: gap_over(g, false),
-            beta_over_g,
-            beta,
-            b: beta.exp(),
-            h,
-            r,
+            b_step: bg * exprel(base.beta),
+            common: -h - bg * bg * exprel2(base.beta),
+            base,
             d,
             v,
             e,
@@ -298,29 +296,25 @@ impl Symmetric {
 
     /// T_0 of D_s at y off the ends: (Q6) for 0 <= y < 1, (Q7) for y > 1, odd in y.
     fn t0(&self, p: Point) -> f64 {
-        let g = self.g;
+        let g = self.base.g;
         let series = |c: &[f64], z: f64| c.iter().rev().fold(0.0, |acc, &a| acc * z + a) * z;
         let (p, sign) = if p.y < 0.0 {
             (p.reflected(), -1.0)
         } else {
             (p, 1.0)
         };
-        let common = -self.h - self.beta_over_g * self.beta_over_g * exprel2(self.beta);
         let value = if p.inside() {
             let z = 0.5 * p.omy;
             let l = p.omy.ln() + p.opy.ln();
-            -g * self.gap * l * exprel(g * l) + l * l * exprel2(g * l) - self.gap
-                + common
-                + 2.0
-                    * (self.beta_over_g * exprel(self.beta) * series(&self.r, z)
-                        + series(&self.d, z))
+            let gap = self.base.gap;
+            -g * gap * l * exprel(g * l) + l * l * exprel2(g * l) - gap
+                + self.common
+                + 2.0 * (self.b_step * self.base.s(z) + series(&self.d, z))
         } else if p.y <= 3.0 {
             let x = -p.omy / p.opy;
             let l = (-p.omy).ln() + p.opy.ln();
-            -self.gap_not * (g * l).exp() + l * l * exprel2(g * l) + common
-                - 2.0
-                    * (self.beta_over_g * exprel(self.beta) * series(&self.v, x)
-                        + series(&self.e, x))
+            -self.gap_not * (g * l).exp() + l * l * exprel2(g * l) + self.common
+                - 2.0 * (self.b_step * series(&self.v, x) + series(&self.e, x))
         } else {
             let zeta = 2.0 / p.opy;
             -series(&self.f, zeta)
@@ -332,10 +326,10 @@ impl Symmetric {
     /// 2) / (2g + 1), odd k 0, and for k = 2m >= 2, from int (1 - t^2)^g P_2m = mu_0 (-g)_m
     /// (1/2)_m / ((g + 3/2)_m m!) with (-g)_m / g = -(1 - g)_(m-1), times sqrt(4m + 1).
     fn moments(&self, top: usize) -> Vec<f64> {
-        let g = self.g;
-        let mu0 = 2.0 * self.b / (2.0 * g + 1.0);
+        let g = self.base.g;
+        let mu0 = 2.0 * self.base.b / (2.0 * g + 1.0);
         let mut out = vec![0.0; top];
-        out[0] = 2.0 * (self.beta_over_g * exprel(self.beta) - 2.0) / (2.0 * g + 1.0);
+        out[0] = 2.0 * (self.b_step - 2.0) / (2.0 * g + 1.0);
         // the product -(1 - g)_(m-1) (1/2)_m / ((g + 3/2)_m m!)
         let mut prod = -1.0;
         for m in 1..top.div_ceil(2) {

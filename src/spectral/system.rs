@@ -1226,8 +1226,9 @@ impl Fixed {
         // ((1 - tau^2)^g - 1) / g adds -1 / g times its polynomials to the plain part
         let edge = t.opy.powf(g) / c.powf(g);
         let q_edge = if b.stick[2].is_quotient() {
-            q_plain -= dot(&b.stick[2], Some(1.0 / g), q0 + n1);
-            dot(&b.stick[2], Some(edge / g), q0 + n1)
+            let s = dot(&b.stick[2], Some(1.0 / g), q0 + n1);
+            q_plain -= s;
+            s * edge
         } else {
             dot(&b.stick[2], Some(edge), q0 + n1)
         };
