@@ -232,13 +232,19 @@ impl LargeFriction {
             } else {
                 1.0 - (ci * u + (wi - w)) / c
             };
-            if xi == ci && ci < 1.0 {
-                // exactly at a solution's own stick edge its slip panel's (x - c)^g weights
-                // vanish (g ~ 1e-7: they reach 1/2 only 1e-(3e6) from c) and its q = mu_i p
-                // jumps to mu_i times the stick side's p, which the extrapolation in 1/mu
-                // cannot take (p = -0.24 at x = c, b* = 0.89, mu~ = 1e7): the next double on
-                // the side x lies on, where q is continuous across c to rounding
-                xi = if stick { ci.next_down() } else { ci.next_up() };
+            if ci > 0.0 && ci < 1.0 {
+                // x's side of the combination's edge is each solution's side of its own
+                // edge. The maps round: in a slip zone 1e-8 wide (b* = 0.22, mu~ = inf) x = c
+                // went one ulp past c_i and mixed p = q / mu_i of the slip side into the stick
+                // side's p (p = -1024 at x = c). Exactly at c_i the slip panel's (x - c)^g
+                // weights vanish (g ~ 1e-7: they reach 1/2 only 1e-(3e6) from c) and q = mu_i p
+                // jumps to mu_i times the stick side's p (p = -0.24 at x = c, b* = 0.89,
+                // mu~ = 1e7). So the next double on x's side at the least.
+                xi = if stick {
+                    xi.min(ci.next_down())
+                } else {
+                    xi.max(ci.next_up())
+                };
             }
             let (pi, qi) = s.half_line_tractions(xi);
             (p, q) = (p + a * pi, q + a * qi);
@@ -384,6 +390,40 @@ mod tests {
     #[ignore = "slow tier: the extrapolation in 1/mu~ against the quadratures at two b*"]
     fn extrapolation_solves_the_equations_wide() {
         extrapolation_solves_the_equations_at(&[0.6, 0.95]);
+    }
+
+    /// Each node is read on x's side of its own stick edge: at a thin slip zone (b* = 0.222,
+    /// mu~ = infinity, 1 - c = 1.0e-8, the hostile C draw that found it) the doubles next to
+    /// c give p > 0 on the stick side and p = q / mu~ = 0 on the slip side, q finite and
+    /// p, q even and odd.
+    #[test]
+    fn points_next_to_the_edge_keep_their_side() {
+        let k = Coupling {
+            bp: 0.8118278966658558,
+            bq: 0.060706390274337586,
+            mu: f64::MAX,
+        };
+        let s = solve_to(&k, 8.5e-8, 7.2e-6).unwrap();
+        let c = s.edge().c;
+        assert!(
+            s.edge().one_minus_c < 1e-7,
+            "1 - c = {}",
+            s.edge().one_minus_c
+        );
+        let mut x = c.next_down().next_down();
+        for _ in 0..5 {
+            let (p, q) = s.half_line_tractions(x);
+            let (pm, qm) = s.tractions(-x);
+            println!("x = c + {:.1e}: p = {p}, q = {q}", x - c);
+            assert!(p.is_finite() && q.is_finite());
+            assert!(
+                if x <= c { p > 0.0 } else { p == 0.0 },
+                "p = {p} at x - c = {:e}",
+                x - c
+            );
+            assert!(pm == p && qm == -q);
+            x = x.next_up();
+        }
     }
 
     fn extrapolation_solves_the_equations_at(b_star: &[f64]) {
