@@ -1940,15 +1940,28 @@ fn measure_routed_second_unloading() {
         let t = std::time::Instant::now();
         match far_level(&*r, x, f * q_star, level, 1e-10, &mut None) {
             Ok(o) => {
+                let (ip, iq) = quadrature_forces(g, &o.state);
+                // the far layer's margin (mu p - q)/(mu p) at fractions of its width
+                let margin: Vec<String> = [0.99, 0.5, 0.1, 1e-2]
+                    .iter()
+                    .map(|s| {
+                        let (p, q) = o.state.tractions(2.0 - s * o.x[3], s * o.x[3]);
+                        format!("{:.2e}", (k.mu * p - q) / (k.mu * p))
+                    })
+                    .collect();
                 println!(
                     "beyond, level {level}: Q/Q* = {f}: 1 - d2 = {:.3e} ({:.2e} e_r), 1 + a1 = \
-                     {:.6e}, step {:.1e}, {} solves; {:?}",
+                     {:.6e}, step {:.1e}, {} solves; {:?}; int p - 1 = {:.1e}, int q - Q/P = \
+                     {:.1e}; far layer's margin at 0.99, 0.5, 0.1, 1e-2 of it {}",
                     o.x[3],
                     o.x[3] / er,
                     o.x[1],
                     o.step,
                     o.solves,
-                    t.elapsed()
+                    t.elapsed(),
+                    ip - 1.0,
+                    iq - f * q_star,
+                    margin.join(", ")
                 );
                 x = o.x;
             }
