@@ -1811,7 +1811,9 @@ fn measure_second_unloading_march() {
 /// residuals between collocation points; then the far layer's vanishing bisected on the far
 /// model at level `ORTHOSLIP_LEVEL` (4 by default) from the last load with a far layer (each
 /// trial from the last answer's ends). `ORTHOSLIP_LOADS`: the loads in units of Q* (the
-/// first cold), by default 0.9, 0.5, 0, -0.3, -0.4, -0.45, -0.5. Prints, asserts nothing.
+/// first cold), by default 0.9, 0.5, 0, -0.3, -0.4, -0.45, -0.5; `ORTHOSLIP_BEYOND`: loads
+/// (units of Q*) tried after the bisection, each from the last answer's ends (none by
+/// default). Prints, asserts nothing.
 #[cfg(feature = "measure")]
 #[test]
 #[ignore = "measurement"]
@@ -1928,6 +1930,44 @@ fn measure_routed_second_unloading() {
         hi / q_star,
         t0.elapsed()
     );
+    // past the bisection's last answer: each load of ORTHOSLIP_BEYOND (units of Q*) from the
+    // last answer's ends, as long as they answer
+    let beyond: Vec<f64> = std::env::var("ORTHOSLIP_BEYOND")
+        .ok()
+        .map(|s| s.split(',').filter_map(|v| v.trim().parse().ok()).collect())
+        .unwrap_or_default();
+    for f in beyond {
+        let t = std::time::Instant::now();
+        match far_level(&*r, x, f * q_star, level, 1e-10, &mut None) {
+            Ok(o) => {
+                let (ip, iq) = quadrature_forces(g, &o.state);
+                // the far layer's margin (mu p - q)/(mu p) at fractions of its width
+                let margin: Vec<String> = [0.99, 0.5, 0.1, 1e-2]
+                    .iter()
+                    .map(|s| {
+                        let (p, q) = o.state.tractions(2.0 - s * o.x[3], s * o.x[3]);
+                        format!("{:.2e}", (k.mu * p - q) / (k.mu * p))
+                    })
+                    .collect();
+                println!(
+                    "beyond, level {level}: Q/Q* = {f}: 1 - d2 = {:.3e} ({:.2e} e_r), 1 + a1 = \
+                     {:.6e}, step {:.1e}, {} solves; {:?}; int p - 1 = {:.1e}, int q - Q/P = \
+                     {:.1e}; far layer's margin at 0.99, 0.5, 0.1, 1e-2 of it {}",
+                    o.x[3],
+                    o.x[3] / er,
+                    o.x[1],
+                    o.step,
+                    o.solves,
+                    t.elapsed(),
+                    ip - 1.0,
+                    iq - f * q_star,
+                    margin.join(", ")
+                );
+                x = o.x;
+            }
+            Err(e) => println!("beyond, level {level}: Q/Q* = {f}: {e}; {:?}", t.elapsed()),
+        }
+    }
 }
 
 /// The routed second unloading on the ply (mu = 0.3, Q* = 0.6 mu P; docs/theory_tangential.md

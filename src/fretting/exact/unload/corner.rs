@@ -426,9 +426,85 @@ pub(crate) fn model_level<D: Start + ?Sized, const N: usize>(
     jac: &mut Option<[[f64; N]; N]>,
 ) -> Result<LayeredLevel<N>> {
     let layers: &[usize] = if N == 4 { &[0, 3] } else { &[0] };
-    layered_level(x0, tol, jac, model_name(N), layers, |x| {
+    let tops = data_tops::<D, N>(m);
+    layered_level(x0, tol, jac, model_name(N), layers, tops, |x| {
         model_fixed(m, x, qp, level)
     })
+}
+
+/// The upper bounds the data sets on the ends' logarithms (infinite where none): with a far
+/// layer (N = 4), 1 - d2 below the data's nearest kink to +1 ([`far_fixed`] refuses a far
+/// layer holding one: on the reloaded state the layer's top e_r, section 24).
+fn data_tops<D: Start + ?Sized, const N: usize>(m: &D) -> [f64; N] {
+    let mut tops = [f64::INFINITY; N];
+    if N == 4 {
+        tops[3] = m
+            .kinks()
+            .iter()
+            .map(|c| 2.0 - c.opx)
+            .fold(f64::INFINITY, f64::min)
+            .ln();
+    }
+    tops
+}
+
+/// The fraction of its logarithm's distance to the data's bound that a chord step may take
+/// an end which it would otherwise carry past the bound ([`damped_step`]): bisection in the
+/// logarithm, so each such step at least halves the end's distance to the bound in ln and
+/// the root, which lies inside (section 24: the far layer keeps inside the data's layer),
+/// stays reachable in a bounded number of them. Where the step would not cross the bound it
+/// is left as it was: the answers found before the damping are unchanged.
+pub(crate) const BOUND_FRACTION: f64 = 0.5;
+
+/// The closest an end may come to its data bound in its logarithm: the chord method's
+/// forward differences ([`layered_level`]) step by 1e-3 in the ends' logarithms, so an end
+/// closer than that to the bound would put a Jacobian's column beyond it. A shortened step
+/// that leaves less than this gives up (NoConvergence): the chord method keeps pressing the
+/// end outwards. A step crosses the bound only from within ln 2 of it (the factor-2
+/// damping), and with [`BOUND_FRACTION`] 1/2 each shortened step halves the distance, so at
+/// most log2(ln 2 / 1e-3) < 10 shortened steps in a row precede the refusal.
+pub(crate) const BOUND_GAP: f64 = 1e-3;
+
+/// A chord step in the ends' logarithms `lx` along the Newton step `d` (section 20): damped
+/// to a factor 2 in the largest end, then, where it would carry an end past its data bound
+/// `tops` (logarithms, infinite where none), shortened as a whole (its direction kept) so
+/// that end moves [`BOUND_FRACTION`] of its distance to the bound; NoConvergence where the
+/// shortened step leaves such an end within [`BOUND_GAP`] of its bound, as where a step takes an
+/// end of `layers` below [`LAYER_MIN`] (the layer vanishes). Returns the next logarithms
+/// and the largest Newton component (the chord method's measure of convergence).
+pub(crate) fn damped_step<const N: usize>(
+    lx: [f64; N],
+    d: [f64; N],
+    tops: [f64; N],
+    layers: &[usize],
+    what: &str,
+) -> Result<([f64; N], f64)> {
+    let big = d.iter().fold(0.0f64, |a, v| a.max(v.abs()));
+    let mut damp = (std::f64::consts::LN_2 / big).min(1.0);
+    let crossing: Vec<usize> = (0..N)
+        .filter(|&i| lx[i] < tops[i] && lx[i] + damp * d[i] >= tops[i])
+        .collect();
+    for &i in &crossing {
+        damp = damp.min(BOUND_FRACTION * (tops[i] - lx[i]) / d[i]);
+    }
+    let next: [f64; N] = std::array::from_fn(|i| lx[i] + damp * d[i]);
+    if let Some(&i) = crossing.iter().find(|&&i| tops[i] - next[i] < BOUND_GAP) {
+        return Err(Error::NoConvergence(format!(
+            "exact corner ({what}): the chord method presses end {i} against the data's bound \
+             (a step to {:e}, the bound {:e}, ends {:?})",
+            next[i].exp(),
+            tops[i].exp(),
+            next.map(f64::exp)
+        )));
+    }
+    if layers.iter().any(|&i| next[i].exp() < LAYER_MIN) {
+        return Err(Error::NoConvergence(format!(
+            "exact corner ({what}): the layer vanishes (a step to the layers' \
+             widths {:?}, below {LAYER_MIN:e})",
+            layers.iter().map(|&i| next[i].exp()).collect::<Vec<_>>()
+        )));
+    }
+    Ok((next, big))
 }
 
 /// The layer's floor: a step of the chord method to 1 + e2 below it ends the outer model
@@ -458,15 +534,43 @@ pub(crate) fn outer_level<D: Start + ?Sized>(
 /// (steps damped to a factor 2 in the largest end, restarted with a fresh Jacobian up to
 /// [`RESTARTS`] times while they stay above [`RESTART_ABOVE`]), `solve` giving the solution
 /// at given ends; a step taking an end of `layers` below [`LAYER_MIN`] ends it (the layer
-/// vanishes). `what` names the model in the messages.
+/// vanishes); a step that would carry an end past its data bound `tops` (the far layer past
+/// the data's layer top) is shortened rather than refused ([`damped_step`]). `what` names
+/// the model in the messages.
 fn layered_level<const N: usize>(
     x0: [f64; N],
     tol: f64,
     jac: &mut Option<[[f64; N]; N]>,
     what: &str,
     layers: &[usize],
-    mut solve: impl FnMut([f64; N]) -> Result<Solved>,
+    tops: [f64; N],
+    solve: impl FnMut([f64; N]) -> Result<Solved>,
 ) -> Result<LayeredLevel<N>> {
+    let (x, state, step, solves) =
+        layered_root(x0, tol, jac, what, layers, tops, solve, |s: &Solved| {
+            std::array::from_fn(|i| s.sigma[i])
+        })?;
+    Ok(LayeredLevel {
+        x,
+        state,
+        step,
+        solves,
+    })
+}
+
+/// [`layered_level`]'s search on any state `S` whose `value` is the N functions to zero:
+/// the ends, their state, the last step and the count of solves.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn layered_root<S, const N: usize>(
+    x0: [f64; N],
+    tol: f64,
+    jac: &mut Option<[[f64; N]; N]>,
+    what: &str,
+    layers: &[usize],
+    tops: [f64; N],
+    mut solve: impl FnMut([f64; N]) -> Result<S>,
+    value: impl Fn(&S) -> [f64; N],
+) -> Result<([f64; N], S, f64, usize)> {
     let mut lx = x0.map(f64::ln);
     let mut restarts = 0;
     let mut solves = 0;
@@ -481,20 +585,8 @@ fn layered_level<const N: usize>(
                 solves += 1;
                 solve(lx.map(f64::exp))
             },
-            |s: &Solved| std::array::from_fn(|i| s.sigma[i]),
-            |lx: [f64; N], d: [f64; N]| {
-                let big = d.iter().fold(0.0f64, |a, v| a.max(v.abs()));
-                let damp = (std::f64::consts::LN_2 / big).min(1.0);
-                let next: [f64; N] = std::array::from_fn(|i| lx[i] + damp * d[i]);
-                if layers.iter().any(|&i| next[i].exp() < LAYER_MIN) {
-                    return Err(Error::NoConvergence(format!(
-                        "exact corner ({what}): the layer vanishes (a step to the layers' \
-                         widths {:?}, below {LAYER_MIN:e})",
-                        layers.iter().map(|&i| next[i].exp()).collect::<Vec<_>>()
-                    )));
-                }
-                Ok((next, big))
-            },
+            &value,
+            |lx: [f64; N], d: [f64; N]| damped_step(lx, d, tops, layers, what),
         )?;
         lx = next;
         if restarts == RESTARTS && step > RESTART_ABOVE {
@@ -505,12 +597,7 @@ fn layered_level<const N: usize>(
             )));
         }
         if step <= tol.max(RESTART_ABOVE) || restarts == RESTARTS {
-            return Ok(LayeredLevel {
-                x: lx.map(f64::exp),
-                state,
-                step,
-                solves,
-            });
+            return Ok((lx.map(f64::exp), state, step, solves));
         }
         restarts += 1;
         *jac = None;

@@ -1687,3 +1687,146 @@ fn routed_far_layer_at_strong_coupling() {
         t0.elapsed()
     );
 }
+
+/// The layered chord method's steps past a data bound are shortened, not refused
+/// (docs/theory_tangential.md section 25; [`corner::damped_step`]), on a synthetic root in
+/// the far model's setting: two ends, the second a far layer's width in units of the data's
+/// layer top, which the solve refuses at or above 1 (as [`corner::far_fixed`] refuses a far
+/// layer holding a data kink), the functions x0 - 1 ... in the logarithms l0 and
+/// exp(2 (l1 + 0.2)) - 1, convex in l1, so that Newton's steps from below overshoot the
+/// root l1 = -0.2: from l1 = -5 the factor-2 damping alone (the rule before, the bound
+/// infinite) steps to l1 = 0.109 and is refused; with the bound at 0 the step is shortened
+/// and the root found. Then the rule on single steps: one that stays inside is the
+/// factor-2 damping's, one that would cross takes [`corner::BOUND_FRACTION`] of the
+/// distance, one that presses within [`corner::BOUND_GAP`] gives up (NoConvergence).
+#[test]
+fn chord_steps_past_the_data_bound_are_damped() {
+    let solve = |x: [f64; 2]| {
+        if x[1] >= 1.0 {
+            return Err(Error::InvalidArgument(format!(
+                "the far layer {:e} holds the data's kink at 1",
+                x[1]
+            )));
+        }
+        Ok([x[0].ln(), (2.0 * (x[1].ln() + 0.2)).exp() - 1.0])
+    };
+    let start = [0.5f64.exp(), (-5.0f64).exp()];
+    let value = |s: &[f64; 2]| *s;
+    let before = corner::layered_root(
+        start,
+        1e-10,
+        &mut None,
+        "synthetic",
+        &[],
+        [f64::INFINITY; 2],
+        solve,
+        value,
+    );
+    assert!(
+        matches!(before, Err(Error::InvalidArgument(_))),
+        "without the bound the chord method should step past it: {:?}",
+        before.map(|r| r.0)
+    );
+    let (x, _, step, solves) = corner::layered_root(
+        start,
+        1e-10,
+        &mut None,
+        "synthetic",
+        &[],
+        [f64::INFINITY, 0.0],
+        solve,
+        value,
+    )
+    .unwrap();
+    assert!(
+        (x[1].ln() + 0.2).abs() < 1e-9 && x[0].ln().abs() < 1e-9,
+        "{x:?} (step {step:e}, {solves} solves)"
+    );
+    let tops = [f64::INFINITY, 0.0];
+    let (inside, big) = corner::damped_step([0.0, -2.0], [0.1, 1.0], tops, &[], "s").unwrap();
+    assert_eq!(big, 1.0);
+    let ln2 = std::f64::consts::LN_2;
+    assert!((inside[1] + 2.0 - ln2).abs() < 1e-15 && (inside[0] - 0.1 * ln2).abs() < 1e-15);
+    let (cut, _) = corner::damped_step([0.0, -0.4], [0.1, 1.0], tops, &[], "s").unwrap();
+    assert!((cut[1] + 0.4 * (1.0 - corner::BOUND_FRACTION)).abs() < 1e-15);
+    assert!((cut[0] - 0.1 * 0.4 * corner::BOUND_FRACTION).abs() < 1e-15);
+    let pressed = corner::damped_step([0.0, -1e-3], [0.1, 1.0], tops, &[], "s");
+    assert!(
+        matches!(pressed, Err(Error::NoConvergence(_))),
+        "{pressed:?}"
+    );
+}
+
+/// The far model's cold march at strong coupling past the far layer's vanishing
+/// (docs/theory_tangential.md section 25; the scene of [`routed_far_layer_at_strong_coupling`]:
+/// b* = 0.9, mu~ = 1, Q* = 0.3 mu P, the data the first unloading's routed answer at 0.9 Q*
+/// at (1e-3, 1e-2), seen mirrored): [`march`] of the far model at level 3 from the width
+/// laws toward `ORTHOSLIP_LOAD` Q* (-1.2 by default, in the mirrored frame), where it got to
+/// and why it stopped; then [`unload`] at that load (the march, the hand-over and the
+/// ladder) with its ends, estimates and checks. Prints, asserts nothing.
+#[cfg(feature = "measure")]
+#[test]
+#[ignore = "measurement"]
+fn measure_far_march_at_strong_coupling() {
+    let load = std::env::var("ORTHOSLIP_LOAD")
+        .ok()
+        .and_then(|s| s.parse::<f64>().ok())
+        .unwrap_or(-1.2);
+    let k = strong();
+    let q_star = 0.3;
+    let t0 = std::time::Instant::now();
+    let m = Arc::new(monotonic(&k, q_star, 1e-10, 1e-8).unwrap());
+    let first = Arc::new(unload(&m, 0.9 * q_star, 1e-3, 1e-2).unwrap());
+    let er = first.level.layer.unwrap();
+    let w = first.level.w2.unwrap();
+    let inner: Arc<dyn Start> = first.clone();
+    let data = Arc::new(Mirror { inner });
+    println!("data: e_r = {er:.6e}, w = {w:.6e}, {:?}", t0.elapsed());
+    let qp = load * q_star;
+    let t = std::time::Instant::now();
+    let mut jac = None;
+    let far = march(
+        Marched::start(&*data, qp, [0.08 * w, 1.05 * w, 0.9 * w, 0.9 * er]),
+        qp,
+        true,
+        MARCH_TOL,
+        &mut jac,
+        |x, q, t, jac| corner::far_level(&*data, x, q, OUTER_FIRST, t, jac),
+    );
+    println!(
+        "far march: reached Q/Q* = {:.5} with ends {:?} (1 - d2 = {:.3e} e_r), {} solves, \
+         {:?}; stopped: {:?}",
+        far.t / q_star,
+        far.x,
+        far.x[3] / er,
+        far.solves,
+        t.elapsed(),
+        far.stopped
+            .as_ref()
+            .map(|(q, e)| (q / q_star, e.to_string()))
+    );
+    let t = std::time::Instant::now();
+    match unload(&data, qp, 1e-3, 1e-2) {
+        Ok(u) => {
+            let g = edge_exponent(&k);
+            let (ip, iq) = quadrature_forces(g, &u.level.state);
+            println!(
+                "unload at {load} Q*: 1 + e2 = {:.6e}, 1 + a1 = {:.6e}, 1 - a2 = {:.6e}, far \
+                 {:?}; estimates {:.2e}, {:.2e}; level {}, {} solves, {:?}; int p - 1 = \
+                 {:.1e}, int q - Q/P = {:.1e}",
+                u.level.layer.unwrap(),
+                u.level.wa,
+                u.level.w2.unwrap(),
+                u.level.far,
+                u.c_error,
+                u.traction_error,
+                u.levels,
+                u.solves,
+                t.elapsed(),
+                ip - 1.0,
+                iq - u.qp
+            );
+        }
+        Err(e) => println!("unload at {load} Q*: {e}; {:?}", t.elapsed()),
+    }
+}
