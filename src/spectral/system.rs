@@ -1077,6 +1077,13 @@ impl Assembled {
     }
 }
 
+/// The rounding noise of (p, q) at a point, absolute ([`Fixed::combine`]).
+#[derive(Clone, Copy, Debug, Default)]
+pub(crate) struct Noise {
+    pub(crate) p: f64,
+    pub(crate) q: f64,
+}
+
 impl Fixed {
     /// (p, q) of the reduced problem at a point.
     pub(crate) fn eval(&self, p: &Pt) -> (f64, f64) {
@@ -1084,8 +1091,8 @@ impl Fixed {
         (p, q)
     }
 
-    /// (p, q) at a point, and their rounding noise relative to p ([`Fixed::combine`]).
-    pub(crate) fn eval_with_noise(&self, p: &Pt) -> (f64, f64, f64) {
+    /// (p, q) at a point, and their rounding noise ([`Fixed::combine`]).
+    pub(crate) fn eval_with_noise(&self, p: &Pt) -> (f64, f64, Noise) {
         let mut work = Vec::new();
         self.columns_into(p, &mut work);
         self.combine(p, &work)
@@ -1099,7 +1106,7 @@ impl Fixed {
         other: &Fixed,
         at: impl Fn(&Fixed) -> Pt,
         work: &mut Vec<f64>,
-    ) -> ((f64, f64, f64), (f64, f64)) {
+    ) -> ((f64, f64, Noise), (f64, f64)) {
         let p = at(self);
         self.columns_into(&p, work);
         let mine = self.combine(&p, work);
@@ -1128,12 +1135,11 @@ impl Fixed {
     }
 
     /// (p, q) at the point `p` from the columns' values in `work` ([`Fixed::columns_into`]),
-    /// and their rounding noise relative to p: the machine epsilon times sum |a_j phi_j(x)| /
-    /// p(x) for p, and the same for q relative to mu p on the stick zone (|q| <= mu p there;
-    /// on the slip zone q = mu p is exact), the larger of the two. The frame's columns are
-    /// near-dependent, so its coefficients can be large and cancel
-    /// (docs/theory_spectral.md (R2)).
-    fn combine(&self, p: &Pt, work: &[f64]) -> (f64, f64, f64) {
+    /// and their rounding noise: the machine epsilon times sum |a_j phi_j(x)| over p's columns
+    /// and over q's on the stick zone, mu times p's on the slip zone (q = mu p is exact
+    /// there). The frame's columns are near-dependent, so its coefficients can be large and
+    /// cancel (docs/theory_spectral.md (R2)).
+    fn combine(&self, p: &Pt, work: &[f64]) -> (f64, f64, Noise) {
         let n = self.coef.len();
         let (pv, qv) = (&work[..n], &work[n..2 * n]);
         // the sums over the columns that can be nonzero in the point's zone, in the columns'
@@ -1161,9 +1167,12 @@ impl Fixed {
         let (q, q_size) = if on_stick {
             sum(qv, &[(q0, s0), bonded])
         } else {
-            (mu * value, 0.0)
+            (mu * value, mu * size)
         };
-        let noise = f64::EPSILON * size.max(q_size / mu) / value.abs();
+        let noise = Noise {
+            p: f64::EPSILON * size,
+            q: f64::EPSILON * q_size,
+        };
         (value, q, noise)
     }
 
