@@ -32,7 +32,9 @@
 //! ((O1) with w = 1 - a2**, docs/theory_tangential.md sections 22-23). Data with a layer
 //! stuck at +1 (the reloaded state, `Start::far_layer`) is the second unloading's: [`unload`]
 //! answers it with the outer model with a far layer ([`far_cold`], sections 24-25), handing
-//! over to the outer model where the far layer vanishes.
+//! over to the outer model where the far layer vanishes; near the far layer's end the march's
+//! steps follow the layer's law ([`LayerLaw`], section 26), and [`unload_from`] marches from
+//! a far answer to that end where its ladder at the target fails.
 
 pub(crate) mod corner;
 #[cfg(test)]
@@ -867,16 +869,17 @@ impl LayerLaw {
 }
 
 /// The fraction of the distance to the layer law's zero Q0 that one step of [`march`] may
-/// take where a layer falls ([`LayerLaw`]): the layer falls by (1 - 1/2)^alpha, a factor 4.2
-/// at the ply's alpha = 1/(1 - g) = 2.06. On the ply's far layer at level 4 steps that
+/// take where a layer falls ([`LayerLaw`]): the layer falls by (1 - 1/2)^alpha, a factor 3.8
+/// at the ply's alpha = 1/(1 - g) = 1.94. On the ply's far layer at level 4 steps that
 /// divided it by 2.9, 2.3, 1.8 and 1.2 .. 1.4 converged from the answer before, one dividing it
-/// by 26 did not (docs/theory_tangential.md section 25); the cap binds only where the layer
-/// is that close to its end (the ply's cold march down to -0.4 Q*: section 26).
+/// by 26 did not (docs/theory_tangential.md section 25). It governs the march only where
+/// LAW_STEP times the distance is below [`MAX_MARCH_STEP`] units: on the ply's cold march to
+/// -0.4 Q* on its last step only (section 26).
 pub(crate) const LAW_STEP: f64 = 0.5;
 
 /// The smallest step of [`march`] where the layer's law holds, as a fraction of the distance
 /// to its zero (below [`MIN_MARCH_STEP`] units only where that is larger): four halvings of
-/// [`LAW_STEP`]'s step, a step over which the law moves the layer by 6 % (1 - 1/32)^2.06;
+/// [`LAW_STEP`]'s step, a step over which the law moves the layer by 6 % (1 - 1/32)^1.94;
 /// where that fails too, the march has reached the layered model's end (on the ply's far
 /// layer [`corner::LAYER_MIN`], section 26).
 pub(crate) const LAW_FLOOR: f64 = 1.0 / 32.0;
@@ -941,8 +944,8 @@ pub(crate) fn far_cold<D: Start + ?Sized>(
 /// The exponent of the far layer's law near its end, 1 - d2 ~ (Q - Q0)^alpha
 /// (docs/theory_tangential.md section 26): alpha = 1/(1 - g), the layer's top where the
 /// margin d^(1 - g) next to it is of the size of the increment, O(Q - Q0) (section 24's
-/// balance); on the ply 2.063, against 2.11 fitted to the far layer's last six answers
-/// (section 25).
+/// balance, a balance rather than a solution of the inner problem); on the ply 1.940, against
+/// 2.11 fitted to the far layer's last six answers (section 25).
 pub(crate) fn far_law_exponent(k: &Coupling) -> f64 {
     1.0 / (1.0 - edge_exponent(k))
 }
