@@ -32,7 +32,9 @@
 //! ((O1) with w = 1 - a2**, docs/theory_tangential.md sections 22-23). Data with a layer
 //! stuck at +1 (the reloaded state, `Start::far_layer`) is the second unloading's: [`unload`]
 //! answers it with the outer model with a far layer ([`far_cold`], sections 24-25), handing
-//! over to the outer model where the far layer vanishes.
+//! over to the outer model where the far layer vanishes; near the far layer's end the march's
+//! steps follow the layer's law ([`LayerLaw`], section 26), and [`unload_from`] marches from
+//! a far answer to that end where its ladder at the target fails.
 
 pub(crate) mod corner;
 #[cfg(test)]
@@ -668,6 +670,7 @@ pub(crate) fn outer_cold_with<D: Start + ?Sized>(
         cheap,
         march_tol,
         &mut jac,
+        None,
         |x, q, t, jac| corner::outer_level(&**m, x, q, OUTER_FIRST, t, jac),
     );
     if let Some((next, e)) = marched.stopped {
@@ -697,13 +700,13 @@ fn edge_width<D: Start + ?Sized>(m: &D) -> Result<f64> {
 }
 
 /// Where a march along a layered model's branch has got to ([`march`]).
-struct Marched<const N: usize> {
+struct Marched<const N: usize, L = corner::LayeredLevel<N>> {
     /// The load reached and its ends; the load and ends before it (the predictor's).
     t: f64,
     x: [f64; N],
     before: Option<(f64, [f64; N])>,
     /// The last load's solution (None: none solved yet).
-    reached: Option<corner::LayeredLevel<N>>,
+    reached: Option<L>,
     /// The next step, and the step's unit ([`Marched::start`]).
     h: f64,
     unit: f64,
@@ -713,7 +716,7 @@ struct Marched<const N: usize> {
     stopped: Option<(f64, Error)>,
 }
 
-impl<const N: usize> Marched<N> {
+impl<const N: usize, L> Marched<N, L> {
     /// A march from the data's load with the ends `x` (the width laws of the first step).
     /// The step's unit is the data's load |Q*|/P (a cycle's amplitude; the data's Q is
     /// negative in its own frame for a reversal on the way down, seen mirrored), or, at
@@ -745,41 +748,66 @@ impl<const N: usize> Marched<N> {
 /// [`MAX_MARCH_STEP`] units) and halved after a failure; the Jacobian carried from load to
 /// load when `keep` (a failed load drops it). It returns where it got to, with the last
 /// failure in `stopped` if the step fell below [`MIN_MARCH_STEP`] units before `qp`.
-fn march<const N: usize>(
-    mut at: Marched<N>,
+fn march<const N: usize, L: Marchable<N>>(
+    mut at: Marched<N, L>,
     qp: f64,
     keep: bool,
     march_tol: f64,
     jac: &mut Option<[[f64; N]; N]>,
-    mut solve: impl FnMut(
-        [f64; N],
-        f64,
-        f64,
-        &mut Option<[[f64; N]; N]>,
-    ) -> Result<corner::LayeredLevel<N>>,
-) -> Marched<N> {
+    layer: Option<(usize, f64)>,
+    mut solve: impl FnMut([f64; N], f64, f64, &mut Option<[[f64; N]; N]>) -> Result<L>,
+) -> Marched<N, L> {
     while at.t > qp {
-        let next = (at.t - at.h).max(qp);
         let (t, x) = (at.t, at.x);
-        let guess = at.before.map_or(x, |(tb, xb)| {
+        // the layer's law from the two loads before, where the layer falls
+        let law = layer.and_then(|(i, alpha)| {
+            at.before
+                .and_then(|(tb, xb)| LayerLaw::fit((tb, xb[i]), (t, x[i]), alpha))
+                .map(|l| (i, l))
+        });
+        // the law governs the steps, the layer's prediction and the floor where its step is
+        // below the march's largest: near the layer's end
+        let law = law.filter(|(_, l)| LAW_STEP * l.d < MAX_MARCH_STEP * at.unit);
+        if let Some((_, l)) = &law {
+            at.h = at.h.min(LAW_STEP * l.d);
+        }
+        let next = (t - at.h).max(qp);
+        let mut guess = at.before.map_or(x, |(tb, xb)| {
             let r = (next - t) / (t - tb);
             std::array::from_fn(|i| x[i] * (x[i] / xb[i]).powf(r))
         });
+        let mut below = None;
+        if let Some((i, l)) = &law {
+            guess[*i] = l.at(t - next);
+            if guess[*i] < corner::LAYER_MIN {
+                below = Some(Error::NoConvergence(format!(
+                    "the layer's law (Q - Q0)^{:.3} puts it at {:e} there, below LAYER_MIN                      (Q0 at {:e} below the last load)",
+                    l.alpha, guess[*i], l.d
+                )));
+            }
+        }
         if !keep {
             *jac = None;
         }
-        match solve(guess, next, march_tol, jac) {
+        let solved = match below {
+            Some(e) => Err(e),
+            None => solve(guess, next, march_tol, jac),
+        };
+        match solved {
             Ok(o) => {
-                at.solves += o.solves;
+                at.solves += o.solves();
                 at.before = Some((t, x));
-                (at.t, at.x) = (next, o.x);
+                (at.t, at.x) = (next, o.ends());
                 at.h = (2.0 * at.h).min(MAX_MARCH_STEP * at.unit);
                 at.reached = Some(o);
             }
             Err(e) => {
                 *jac = None;
                 at.h *= 0.5;
-                if at.h < MIN_MARCH_STEP * at.unit {
+                let floor = law.map_or(MIN_MARCH_STEP * at.unit, |(_, l)| {
+                    (MIN_MARCH_STEP * at.unit).min(LAW_FLOOR * l.d)
+                });
+                if at.h < floor {
                     at.stopped = Some((next, e));
                     return at;
                 }
@@ -788,6 +816,73 @@ fn march<const N: usize>(
     }
     at
 }
+
+/// What [`march`] needs of a load's solution: its ends and its count of solves.
+pub(crate) trait Marchable<const N: usize> {
+    fn ends(&self) -> [f64; N];
+    fn solves(&self) -> usize;
+}
+
+impl<const N: usize> Marchable<N> for corner::LayeredLevel<N> {
+    fn ends(&self) -> [f64; N] {
+        self.x
+    }
+    fn solves(&self) -> usize {
+        self.solves
+    }
+}
+
+/// A vanishing layer's width against the load, w = C (Q - Q0)^alpha (docs/theory_tangential.md
+/// section 26), fitted through two loads of a march: `d` the distance of the later load to
+/// Q0 (in the march's direction), `w` the layer there.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct LayerLaw {
+    pub(crate) alpha: f64,
+    pub(crate) d: f64,
+    pub(crate) w: f64,
+}
+
+impl LayerLaw {
+    /// The law through (t0, w0) and (t1, w1), t1 after t0 along the march, where the layer
+    /// falls (w1 < w0): (w1/w0)^(1/alpha) = d1/d0 = r, d0 - d1 = |t0 - t1|, so
+    /// d1 = r |t0 - t1| / (1 - r). None where it does not fall (or a width is not positive).
+    pub(crate) fn fit((t0, w0): (f64, f64), (t1, w1): (f64, f64), alpha: f64) -> Option<Self> {
+        if !(w1 > 0.0 && w0 > w1 && t0 != t1) {
+            return None;
+        }
+        let r = (w1 / w0).powf(1.0 / alpha);
+        Some(LayerLaw {
+            alpha,
+            d: r * (t0 - t1).abs() / (1.0 - r),
+            w: w1,
+        })
+    }
+
+    /// The layer a step `h` further on (zero at and past Q0).
+    pub(crate) fn at(&self, h: f64) -> f64 {
+        if h >= self.d {
+            0.0
+        } else {
+            self.w * (1.0 - h / self.d).powf(self.alpha)
+        }
+    }
+}
+
+/// The fraction of the distance to the layer law's zero Q0 that one step of [`march`] may
+/// take where a layer falls ([`LayerLaw`]): the layer falls by (1 - 1/2)^alpha, a factor 3.8
+/// at the ply's alpha = 1/(1 - g) = 1.94. On the ply's far layer at level 4 steps that
+/// divided it by 2.9, 2.3, 1.8 and 1.2 .. 1.4 converged from the answer before, one dividing it
+/// by 26 did not (docs/theory_tangential.md section 25). It governs the march only where
+/// LAW_STEP times the distance is below [`MAX_MARCH_STEP`] units: on the ply's cold march to
+/// -0.4 Q* on its last step only (section 26).
+pub(crate) const LAW_STEP: f64 = 0.5;
+
+/// The smallest step of [`march`] where the layer's law holds, as a fraction of the distance
+/// to its zero (below [`MIN_MARCH_STEP`] units only where that is larger): four halvings of
+/// [`LAW_STEP`]'s step, a step over which the law moves the layer by 6 % (1 - 1/32)^1.94;
+/// where that fails too, the march has reached the layered model's end (on the ply's far
+/// layer [`corner::LAYER_MIN`], section 26).
+pub(crate) const LAW_FLOOR: f64 = 1.0 / 32.0;
 
 /// ToleranceNotMet where the corner zones' share, [`KAPPA`] times the outer fields' first
 /// zeros below half of each layer, is already above the ends' tolerance at the march's last
@@ -837,13 +932,45 @@ pub(crate) fn far_cold<D: Start + ?Sized>(
     let er = m.far_layer().ok_or_else(|| {
         Error::InvalidArgument("exact corner (far layer): the data has no layer at +1".into())
     })?;
+    far_route(
+        m,
+        Marched::start(&**m, qp, [0.08 * w, 1.05 * w, 0.9 * w, 0.9 * er]),
+        qp,
+        tol,
+        traction_tol,
+    )
+}
+
+/// The exponent of the far layer's law near its end, 1 - d2 ~ (Q - Q0)^alpha
+/// (docs/theory_tangential.md section 26): alpha = 1/(1 - g), the layer's top where the
+/// margin d^(1 - g) next to it is of the size of the increment, O(Q - Q0) (section 24's
+/// balance, a balance rather than a solution of the inner problem); on the ply 1.940, against
+/// 2.11 fitted to the far layer's last six answers (section 25).
+pub(crate) fn far_law_exponent(k: &Coupling) -> f64 {
+    1.0 / (1.0 - edge_exponent(k))
+}
+
+/// The far model's march from `start` (the data's load and the width laws, or an answer
+/// and the one before it along the branch) to Q/P = `qp`, its steps near the far layer's
+/// end sized by the layer's law ([`LayerLaw`], [`far_law_exponent`]); at `qp` the far
+/// model's ladder ([`layered_answer`]); where the march stops (the far layer at its end) or
+/// the ladder fails, section 20's outer model marched on from the last far ends to `qp`
+/// and its ladder: the hand-over.
+fn far_route<D: Start + ?Sized>(
+    m: &Arc<D>,
+    start: Marched<4>,
+    qp: f64,
+    tol: f64,
+    traction_tol: f64,
+) -> Result<Unloading<D>> {
     let mut jac = None;
     let far = march(
-        Marched::start(&**m, qp, [0.08 * w, 1.05 * w, 0.9 * w, 0.9 * er]),
+        start,
         qp,
         true,
         MARCH_TOL,
         &mut jac,
+        Some((3, far_law_exponent(m.coupling()))),
         |x, q, t, jac| corner::far_level(&**m, x, q, OUTER_FIRST, t, jac),
     );
     let three = |x: [f64; 4]| [x[0], x[1], x[2]];
@@ -880,6 +1007,7 @@ pub(crate) fn far_cold<D: Start + ?Sized>(
         true,
         MARCH_TOL,
         &mut jac3,
+        None,
         |x, q, t, jac| corner::outer_level(&**m, x, q, OUTER_FIRST, t, jac),
     );
     let refuse = |e: Error| {
@@ -898,6 +1026,7 @@ pub(crate) fn far_cold<D: Start + ?Sized>(
     layered_answer(m, qp, tol, traction_tol, near.x, &mut jac3)
         .map(|mut u| {
             u.solves += near.solves;
+            u.far_end = Some((far.t, far.x[3]));
             u
         })
         .map_err(refuse)
@@ -952,6 +1081,7 @@ fn layered_answer<D: Start + ?Sized, const N: usize>(
         levels: c.levels,
         solves: c.solves,
         trace: c.trace,
+        far_end: None,
     };
     u.admissible()?;
     let k = m.coupling();
@@ -999,6 +1129,10 @@ pub(crate) struct Unloading<D: Start + ?Sized = Monotonic> {
     pub(crate) solves: usize,
     /// Per level after the first, the unknowns (wa, w2) ([`super::Trace`]).
     pub(crate) trace: super::Trace,
+    /// Where an answer handed over from the outer model with a far layer: the far model's
+    /// march's last load (its start where no step answered) and its far layer 1 - d2 there
+    /// (docs/theory_tangential.md section 26); None otherwise.
+    pub(crate) far_end: Option<(f64, f64)>,
 }
 
 /// The unloading state at Q/P = qp (-mu < qp < Q*/P) from the loaded state `m`, a1, a2 to
@@ -1132,14 +1266,18 @@ pub(crate) fn unload_from<D: Start + ?Sized>(
     check_load(&**m, qp)?;
     let (wa, w2) = (prev.level.wa, prev.level.w2);
     if let (Some(e2), Some(w2), Some(wd)) = (prev.level.layer, w2, prev.level.far) {
-        // the far model from prev's ends; where it fails (the far layer gone), section 20's
-        // outer model from prev's first three ends (the hand-over, section 25), then the cold
-        // start
-        let far = layered_answer(m, qp, tol, traction_tol, [e2, wa, w2, wd], &mut None);
-        return far.or_else(|_| {
-            layered_answer(m, qp, tol, traction_tol, [e2, wa, w2], &mut None)
-                .or_else(|_| unload(m, qp, tol, traction_tol))
-        });
+        // the far model's ladder from prev's ends; where it fails, the far model marched from
+        // prev (and the answer before it, where that has a far layer too) to the far layer's
+        // end and the hand-over there (section 26); then section 20's outer model from prev's
+        // first three ends (section 25's hand-over), then the cold start
+        let x = [e2, wa, w2, wd];
+        let far = layered_answer(m, qp, tol, traction_tol, x, &mut None);
+        return far
+            .or_else(|_| far_route(m, far_march_from(prev, before, qp), qp, tol, traction_tol))
+            .or_else(|_| {
+                layered_answer(m, qp, tol, traction_tol, [e2, wa, w2], &mut None)
+                    .or_else(|_| unload(m, qp, tol, traction_tol))
+            });
     }
     if let (Some(e2), Some(w2)) = (prev.level.layer, w2) {
         // the outer model from prev's ends; where it fails (the layer gone), the three-zone
@@ -1170,6 +1308,40 @@ pub(crate) fn unload_from<D: Start + ?Sized>(
             unload(m, qp, tol, traction_tol)
         }
         other => other,
+    }
+}
+
+/// The far model's march from the far answer `prev` towards Q/P = `qp` ([`far_route`]):
+/// from prev's load and ends, with `before`'s as the one before where it has a far layer
+/// (the predictor and the layer's law from the first step on); without it the first step
+/// is half the way to `qp` (prev's ladder having failed at `qp` itself).
+fn far_march_from<D: Start + ?Sized>(
+    prev: &Unloading<D>,
+    before: Option<&Unloading<D>>,
+    qp: f64,
+) -> Marched<4> {
+    let ends = |u: &Unloading<D>| -> Option<[f64; 4]> {
+        Some([u.level.layer?, u.level.wa, u.level.w2?, u.level.far?])
+    };
+    let x = ends(prev).unwrap_or([f64::NAN; 4]);
+    let before = before
+        .filter(|b| b.qp > prev.qp)
+        .and_then(|b| ends(b).map(|xb| (b.qp, xb)));
+    let unit = prev.loaded.qp().abs();
+    let h = if before.is_some() {
+        MARCH_STEP * unit
+    } else {
+        0.5 * (prev.qp - qp)
+    };
+    Marched {
+        t: prev.qp,
+        x,
+        before,
+        reached: None,
+        h,
+        unit,
+        solves: 0,
+        stopped: None,
     }
 }
 
@@ -1208,6 +1380,7 @@ fn ladder<D: Start + ?Sized>(
                 levels: l.levels,
                 solves: l.solves,
                 trace: l.trace,
+                far_end: None,
             };
             u.admissible().map(|()| u)
         }

@@ -373,6 +373,7 @@ fn ply_corner_on_the_ladder() {
         levels: 0,
         solves: 0,
         trace: Vec::new(),
+        far_end: None,
     };
     let (lead, trail) = r.zone_slips();
     // in the mirrored frame: the zone at +1 is its leading zone (slip must be > 0 there), the
@@ -1006,6 +1007,7 @@ fn outer_model_on_the_ply_reloading_step() {
         levels: 3,
         solves: 0,
         trace: Vec::new(),
+        far_end: None,
     };
     let k = *mirror.coupling();
     let (ip, iq) = quadrature_forces(edge_exponent(&k), &u.level.state);
@@ -1858,6 +1860,30 @@ fn measure_routed_second_unloading() {
             ip - 1.0,
             iq - u.qp
         );
+        // the slips' signs (each zone from its nearer stick end) and the far layer's margin
+        let (lead, trail) = u.zone_slips();
+        let margin: Vec<String> = u.level.far.map_or(vec![], |wd| {
+            [0.99, 0.5, 0.1, 1e-2, 1e-4]
+                .iter()
+                .map(|fr| {
+                    let (p, q) = s.tractions(2.0 - fr * wd, fr * wd);
+                    format!("{:.2e}", (k.mu * p - q) / (k.mu * p))
+                })
+                .collect()
+        });
+        println!(
+            "    leading zone forwards at all {} fractions: {} (smallest {:.1e}); trailing zone \
+             backwards at all {}: {} (smallest |s| {:.1e}); far layer's margin at 0.99, 0.5, \
+             0.1, 1e-2, 1e-4 of it: {}; handed over from the far model at {:?}",
+            lead.len(),
+            lead.iter().all(|v| v.1 > 0.0),
+            lead.iter().map(|v| v.1).fold(f64::INFINITY, f64::min),
+            trail.len(),
+            trail.iter().all(|v| v.1 < 0.0),
+            trail.iter().map(|v| -v.1).fold(f64::INFINITY, f64::min),
+            margin.join(", "),
+            u.far_end.map(|(t, wd)| (t / q_star, wd))
+        );
     };
     let loads: Vec<f64> = std::env::var("ORTHOSLIP_LOADS")
         .ok()
@@ -1868,6 +1894,15 @@ fn measure_routed_second_unloading() {
     show(&prev, t.elapsed());
     let mut last_far: Option<(f64, [f64; 4])> = None;
     let mut first_near: Option<f64> = None;
+    let mut before: Option<Unloading<Reloading>> = None;
+    // ORTHOSLIP_FROM_FIRST: a load (units of Q*) from the first answer alone, before the rest
+    if let Some(f) = env("ORTHOSLIP_FROM_FIRST") {
+        let t = std::time::Instant::now();
+        match unload_from(&prev, None, f * q_star, 1e-8, 1e-5) {
+            Ok(u) => show(&u, t.elapsed()),
+            Err(e) => println!("Q/Q* = {f} from the first: {e}; {:?}", t.elapsed()),
+        }
+    }
     for f in &loads[1..] {
         let t = std::time::Instant::now();
         if let Some(wd) = prev.level.far {
@@ -1881,7 +1916,7 @@ fn measure_routed_second_unloading() {
                 ],
             ));
         }
-        let u = match unload_from(&prev, None, f * q_star, 1e-8, 1e-5) {
+        let u = match unload_from(&prev, before.as_ref(), f * q_star, 1e-8, 1e-5) {
             Ok(u) => u,
             Err(e) => {
                 println!("Q/Q* = {f}: {e}; {:?}", t.elapsed());
@@ -1892,7 +1927,10 @@ fn measure_routed_second_unloading() {
         if u.level.far.is_none() && first_near.is_none() {
             first_near = Some(u.qp);
         }
-        prev = u;
+        before = Some(std::mem::replace(&mut prev, u));
+    }
+    if env("ORTHOSLIP_NO_BISECTION").is_some() {
+        return;
     }
     let (Some((mut lo, mut x)), Some(mut hi)) = (last_far, first_near) else {
         return;

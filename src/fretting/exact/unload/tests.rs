@@ -1791,6 +1791,7 @@ fn measure_far_march_at_strong_coupling() {
         true,
         MARCH_TOL,
         &mut jac,
+        Some((3, far_law_exponent(&k))),
         |x, q, t, jac| corner::far_level(&*data, x, q, OUTER_FIRST, t, jac),
     );
     println!(
@@ -1829,4 +1830,110 @@ fn measure_far_march_at_strong_coupling() {
         }
         Err(e) => println!("unload at {load} Q*: {e}; {:?}", t.elapsed()),
     }
+}
+
+/// The layer's law ([`LayerLaw`], docs/theory_tangential.md section 26) on its closed form,
+/// and [`march`] with it on a synthetic branch whose layer ends at a finite load: two ends,
+/// the first 1e-6 (1 + 0.1 Q), the second a layer w = C (Q - Q0)^2.11, Q0 = -0.432, C set so
+/// that w = 9.34e-11 at Q = -0.4 (the ply's far layer, section 25: fit, exponent and answer
+/// there); its "solve" refuses where w < [`corner::LAYER_MIN`] (the layer vanishes) and
+/// where the predicted layer is more than a factor 3 off the true one (the chord method
+/// heading outwards from a start that far, section 25: 26 failed, 2.9 converged). The march
+/// from Q = 0 (steps of 0.1, as the far march's) towards -0.6 with the law's exponent 1.94
+/// (the ply's 1/(1 - g), not the true 2.11) must stop at the layer's floor: its last load
+/// within 2e-4 of the floor's load Q_f = Q0 + (LAYER_MIN / C)^(1/2.11) and the layer there
+/// below 1.2 LAYER_MIN, with fewer refused solves than the march without the law (its
+/// absolute floor 1e-3 and predictor in the logarithms: 0 against 14 refused); the law's fit
+/// through two exact points gives the distance to Q0 and the layer a step on to 1e-12
+/// relatively.
+#[test]
+fn march_follows_a_vanishing_layer_to_its_floor() {
+    let (alpha, q0): (f64, f64) = (2.11, -0.432);
+    let c = 9.34e-11 / (-0.4 - q0).powf(alpha);
+    let w = |t: f64| {
+        if t > q0 {
+            c * (t - q0).powf(alpha)
+        } else {
+            0.0
+        }
+    };
+    // the law's closed form
+    let l = LayerLaw::fit((-0.3, w(-0.3)), (-0.4, w(-0.4)), alpha).unwrap();
+    assert!((l.d - 0.032).abs() < 1e-12 * 0.032, "d = {}", l.d);
+    let at = l.at(0.01);
+    assert!(
+        (at / w(-0.41) - 1.0).abs() < 1e-12,
+        "{at} against {}",
+        w(-0.41)
+    );
+    assert_eq!(l.at(0.05), 0.0);
+    assert!(LayerLaw::fit((-0.4, w(-0.4)), (-0.3, w(-0.3)), alpha).is_none());
+    // the march on the synthetic branch
+    struct Syn {
+        x: [f64; 2],
+    }
+    impl Marchable<2> for Syn {
+        fn ends(&self) -> [f64; 2] {
+            self.x
+        }
+        fn solves(&self) -> usize {
+            1
+        }
+    }
+    let floor = q0 + (corner::LAYER_MIN / c).powf(1.0 / alpha);
+    let run = |law: Option<(usize, f64)>| {
+        let mut tried = 0;
+        let x0 = [1e-6, w(0.0)];
+        let start: Marched<2, Syn> = Marched {
+            t: 0.0,
+            x: x0,
+            before: None,
+            reached: None,
+            h: MARCH_STEP,
+            unit: 1.0,
+            solves: 0,
+            stopped: None,
+        };
+        let m = march(
+            start,
+            -0.6,
+            true,
+            MARCH_TOL,
+            &mut None,
+            law,
+            |g, t, _, _| {
+                tried += 1;
+                let wt = w(t);
+                if wt < corner::LAYER_MIN {
+                    return Err(Error::NoConvergence("the layer vanishes".into()));
+                }
+                if (g[1] / wt).ln().abs() > 3f64.ln() {
+                    return Err(Error::NoConvergence("a start too far off".into()));
+                }
+                Ok(Syn {
+                    x: [1e-6 * (1.0 + 0.1 * t), wt],
+                })
+            },
+        );
+        (m, tried)
+    };
+    let (m, tried) = run(Some((1, 1.94)));
+    println!(
+        "with the law: reached Q = {:.6} (the floor at {floor:.6}), layer {:.3e}, {} solves, \
+         {tried} tried; stopped at {:?}",
+        m.t,
+        m.x[1],
+        m.solves,
+        m.stopped.as_ref().map(|s| s.0)
+    );
+    assert!(m.stopped.is_some());
+    assert!((m.t - floor).abs() < 2e-4, "{} against {floor}", m.t);
+    assert!(m.x[1] < 1.2 * corner::LAYER_MIN, "{:e}", m.x[1]);
+    let failed = tried - m.solves;
+    let (m, tried) = run(None);
+    println!(
+        "without: reached Q = {:.6}, layer {:.3e}, {} solves, {tried} tried",
+        m.t, m.x[1], m.solves
+    );
+    assert!(failed < tried - m.solves);
 }
