@@ -781,7 +781,8 @@ fn march<const N: usize, L: Marchable<N>>(
             guess[*i] = l.at(t - next);
             if guess[*i] < corner::LAYER_MIN {
                 below = Some(Error::NoConvergence(format!(
-                    "the layer's law (Q - Q0)^{:.3} puts it at {:e} there, below LAYER_MIN                      (Q0 at {:e} below the last load)",
+                    "the layer's law (Q - Q0)^{:.3} puts it at {:e} there, below LAYER_MIN \
+                     (Q0 at {:e} below the last load)",
                     l.alpha, guess[*i], l.d
                 )));
             }
