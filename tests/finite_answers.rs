@@ -161,7 +161,8 @@ fn extreme_materials() {
 /// - large friction (the extrapolation in 1/mu~) exactly at x = c: p < 0 and q ~ -mu;
 /// - stresses at depths beyond ~1e154 (|z|^2 overflows) and at -DBL_MAX: NaN;
 /// - the slip within a subnormal distance of c = 0: NaN;
-/// - moduli whose compliances overflow (subnormal E): accepted with A = +inf.
+/// - moduli whose compliances overflow (subnormal E): accepted with A = +inf;
+/// - stresses where delta < 1e-154 (seeds 7 and 11 of the C program): NaN at every depth.
 #[test]
 fn hostile_extremes() {
     let steel = Material::effective(1.0, 0.3, 1.0, 1.0).unwrap();
@@ -220,6 +221,56 @@ fn hostile_extremes() {
                     "stresses at ({x}, {y:e}): {st:?}"
                 );
             }
+        }
+    }
+    // delta ~ 1e-300: the characteristic roots ~ delta put the points x + i beta y of any
+    // finite depth within 1e-300 of the axis, where the stresses are their surface limits,
+    // infinite under the punch edges (hostile draws of seeds 7 and 11: NaN at every depth);
+    // delta = 1e-200 at a depth that the surface limit does not take (1e-200 |y| = 1e-55):
+    // finite (NaN before, through 1 / (beta1 - beta2))
+    for (nu, delta, kappa, mu) in [
+        (0.999_999_999_999, 1e-300, -0.999_996_418_586_739_7, 0.0),
+        (
+            -0.493_298_062_786_569_5,
+            f64::MIN_POSITIVE,
+            0.493_298_063_609_631_8,
+            1.3e5,
+        ),
+        (0.3, 1e-250, 3.0, 0.3),
+    ] {
+        let m = Material::effective(1.0, nu, delta, kappa).unwrap();
+        let mut k = Contact::new(m);
+        k.set_friction(mu).unwrap();
+        let s = k.solve().unwrap();
+        for x in [0.0, 0.3, 0.99] {
+            let surface = s.stresses(x, 0.0).unwrap();
+            for y in [-1e-3, -0.5, -1e10] {
+                let st = s.stresses(x, y).unwrap();
+                assert!(
+                    st == surface,
+                    "delta = {delta:e}, stresses at ({x}, {y:e}): {st:?}, surface {surface:?}"
+                );
+            }
+        }
+        for y in [-1e-3, -0.5, -1e10] {
+            let st = s.stresses(1.0, y).unwrap();
+            assert!(
+                st[0] == f64::NEG_INFINITY && st[1] == f64::NEG_INFINITY && !st[2].is_nan(),
+                "delta = {delta:e}, stresses at (1, {y:e}): {st:?}"
+            );
+        }
+    }
+    let m = Material::effective(1.0, 0.3, 1e-200, 0.5).unwrap();
+    let mut k = Contact::new(m);
+    k.set_friction(0.3).unwrap();
+    let s = k.solve().unwrap();
+    for x in [0.0, 0.5, 1.0, 3.0] {
+        for y in [-1e145, -1e160, -f64::MAX] {
+            let st = s.stresses(x, y).unwrap();
+            assert!(
+                st.iter().all(|v| v.is_finite()),
+                "delta = 1e-200, stresses at ({x}, {y:e}): {st:?}"
+            );
         }
     }
     // compliances beyond the double range are refused, not reported as infinite

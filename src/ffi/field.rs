@@ -23,9 +23,13 @@ unsafe fn check_finite(v: *const f64, n: usize, name: &str) -> Result<(), Failur
 /// Evaluates the stresses inside the solid at n points (x[i], y[i]) in units of the punch
 /// half-width a, dimensionless per P/a. The solid is y < 0; y = 0 gives the surface values
 /// as limits from inside, and so do depths below 1e-150 (they differ from them by less than
-/// rounding). Tension is positive. On the punch at y = 0: syy = -p, sxy = q (q: the traction
-/// on the solid in +x); at the punch edges themselves (|x| = 1 on the surface)
-/// sxx = syy = -INFINITY and sxy = +-INFINITY (0 when mu = 0). Each method's stresses are
+/// rounding), and below 1e-150 / beta for materials whose characteristic roots are that
+/// small (beta = delta (sqrt((1 + kappa) / 2) + sqrt((kappa - 1) / 2)) for kappa > 1, delta
+/// sqrt((1 + kappa) / 2) for kappa <= 1, from orthoslip_material_effective: the field at
+/// depth y is the surface's at depth beta |y|). Tension is positive. On the punch at y = 0:
+/// syy = -p, sxy = q (q: the traction on the solid in +x); at the punch edges themselves
+/// (|x| = 1 at the depths that take the surface values) sxx = syy = -INFINITY and
+/// sxy = +-INFINITY (0 when mu = 0). Each method's stresses are
 /// those of its own tractions (Lekhnistskii's potentials of the half-plane). Near the
 /// surface at the punch edge, sxx(x, 0) ~ -k [delta^2 + (1 - nu) mu^2] (1 - |x|)^(-g) with the
 /// (k, g) of orthoslip_solution_edge_intensity (GOODMAN: -k delta^2 (1 - |x|)^(-1/2)).

@@ -65,6 +65,9 @@ struct Roots {
     product: f64,
     /// delta^2 kappa = (beta1^2 + beta2^2) / 2.
     square_mean: f64,
+    /// The points' largest depth per unit of depth, max Re beta_k: mean + (beta1 - beta2) / 2
+    /// for real roots, mean for complex ones.
+    deepest: f64,
 }
 
 impl Roots {
@@ -79,11 +82,13 @@ impl Roots {
                 C64::new(0.0, r)
             }
         });
+        let mean = d * (0.5 * (1.0 + k.kappa)).sqrt();
         Roots {
-            mean: d * (0.5 * (1.0 + k.kappa)).sqrt(),
+            mean,
             half,
             product: d * d,
             square_mean: d * d * k.kappa,
+            deepest: mean + half.map_or(0.0, |h| h.re),
         }
     }
 }
@@ -92,11 +97,21 @@ impl Roots {
 /// below every panel's resolution, so that its transforms are the limits from inside.
 const SURFACE_DEPTH: f64 = 1e-300;
 
-/// Depth above which [`Field::stresses`] gives the surface limit: there the derivative terms
-/// y d_f(z), d_f ~ 1 / y^2 next to the surface's singular points, are no longer representable
-/// (y^2 underflows), while the stresses differ from their surface limits by O(|y| / l) for
-/// the smallest panel scale l (1e-21 and up), far below rounding.
+/// Depth of the points x + i beta_k y, the largest of Re(beta_k) |y|, below which
+/// [`Field::stresses`] gives the surface limit: there the derivative terms y d_f(z),
+/// d_f ~ 1 / y^2 next to the surface's singular points, are no longer representable
+/// (y^2 underflows), while the stresses differ from their surface limits by
+/// O(Re(beta) |y| / l) for the smallest panel scale l (1e-21 and up), far below rounding.
+/// The points' depth, not y: with delta = 1e-300 the roots are about 1e-300 and the points
+/// of y = -1e-3 lay 1e-303 below the axis, where the transforms gave NaN (hostile draws of
+/// seeds 7 and 11); at delta = 1e-100 the stresses at y = -0.5 equal their surface limits
+/// to every digit.
 const SURFACE_LIMIT_ABOVE: f64 = 1e-150;
+
+/// |beta1 - beta2| / 2 below which the divided differences' 1 / (beta1 - beta2) is formed
+/// from the modulus: C64::inv squares it, which underflows below 1e-154 (delta = 1e-200:
+/// NaN at every depth).
+const TINY_HALF: f64 = 1e-150;
 
 /// The field of one solution (built lazily by [`crate::Solution`], shared by its threads).
 #[derive(Clone, Debug)]
@@ -147,7 +162,9 @@ impl Field {
 
     /// (sxx, syy, sxy) per P/a at (x, y), y <= 0, both finite (y = 0: the limit from inside).
     pub(crate) fn stresses(&self, x: f64, y: f64) -> [f64; 3] {
-        if y > -SURFACE_LIMIT_ABOVE && x.abs() == 1.0 {
+        let r = &self.roots;
+        let surface = y > -SURFACE_LIMIT_ABOVE || -y * r.deepest < SURFACE_LIMIT_ABOVE;
+        if surface && x.abs() == 1.0 {
             // the punch edge itself, also at the depths that take the surface limit: p, |q|
             // and -sxx are infinite (q = 0 without friction); at y = -1e-300 the transforms
             // of the edge singularity, ~1e150, times delta^2 = 1e300 gave sxx = -inf with a
@@ -166,9 +183,8 @@ impl Field {
             };
             return [f64::NEG_INFINITY, f64::NEG_INFINITY, sxy];
         }
-        let r = &self.roots;
         let zero = C64::new(0.0, 0.0);
-        let (mp, mq, dp, dq) = if y > -SURFACE_LIMIT_ABOVE {
+        let (mp, mq, dp, dq) = if surface {
             // the limit from inside, also for depths below SURFACE_LIMIT_ABOVE (y = -4.9e-324
             // and -1e-300 gave NaN through the derivative terms y d_f): both points at x - i0,
             // d_f = 0, as a point SURFACE_DEPTH
@@ -194,7 +210,12 @@ impl Field {
             let [t1, t2] = self
                 .kernel
                 .transforms([point(mean + half), point(mean - half)], false);
-            let inv = (half * 2.0).inv();
+            let size = half.norm();
+            let inv = if size > TINY_HALF {
+                (half * 2.0).inv()
+            } else {
+                half.conj().unscale(size).unscale(2.0 * size)
+            };
             (
                 (t1.p + t2.p) * 0.5,
                 (t1.q + t2.q) * 0.5,
