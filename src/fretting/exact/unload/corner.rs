@@ -277,9 +277,9 @@ pub(crate) fn outer_fixed<D: Start + ?Sized>(
 }
 
 /// A layered outer model at one level: its N ends, the solution there, the last step.
-pub(crate) struct LayeredLevel<const N: usize> {
+pub(crate) struct LayeredLevel<const N: usize, S = Solved> {
     pub(crate) x: [f64; N],
-    pub(crate) state: Solved,
+    pub(crate) state: S,
     /// The last Newton step's largest move of an end, relative to that end's offset.
     pub(crate) step: f64,
     pub(crate) solves: usize,
@@ -427,9 +427,16 @@ pub(crate) fn model_level<D: Start + ?Sized, const N: usize>(
 ) -> Result<LayeredLevel<N>> {
     let layers: &[usize] = if N == 4 { &[0, 3] } else { &[0] };
     let tops = data_tops::<D, N>(m);
-    layered_level(x0, tol, jac, model_name(N), layers, tops, |x| {
-        model_fixed(m, x, qp, level)
-    })
+    layered_root(
+        x0,
+        tol,
+        jac,
+        model_name(N),
+        layers,
+        tops,
+        |x| model_fixed(m, x, qp, level),
+        |s: &Solved| std::array::from_fn(|i| s.sigma[i]),
+    )
 }
 
 /// The upper bounds the data sets on the ends' logarithms (infinite where none): with a far
@@ -457,7 +464,7 @@ fn data_tops<D: Start + ?Sized, const N: usize>(m: &D) -> [f64; N] {
 pub(crate) const BOUND_FRACTION: f64 = 0.5;
 
 /// The closest an end may come to its data bound in its logarithm: the chord method's
-/// forward differences ([`layered_level`]) step by 1e-3 in the ends' logarithms, so an end
+/// forward differences ([`layered_root`]) step by 1e-3 in the ends' logarithms, so an end
 /// closer than that to the bound would put a Jacobian's column beyond it. A shortened step
 /// that leaves less than this gives up (NoConvergence): the chord method keeps pressing the
 /// end outwards. A step crosses the bound only from within ln 2 of it (the factor-2
@@ -533,33 +540,11 @@ pub(crate) fn outer_level<D: Start + ?Sized>(
 /// The border constants' root in the logarithms of the ends from `x0` by the chord method
 /// (steps damped to a factor 2 in the largest end, restarted with a fresh Jacobian up to
 /// [`RESTARTS`] times while they stay above [`RESTART_ABOVE`]), `solve` giving the solution
-/// at given ends; a step taking an end of `layers` below [`LAYER_MIN`] ends it (the layer
+/// at given ends (any state `S`, `value` its N functions to zero, the border constants for
+/// the layered models); a step taking an end of `layers` below [`LAYER_MIN`] ends it (the layer
 /// vanishes); a step that would carry an end past its data bound `tops` (the far layer past
 /// the data's layer top) is shortened rather than refused ([`damped_step`]). `what` names
 /// the model in the messages.
-fn layered_level<const N: usize>(
-    x0: [f64; N],
-    tol: f64,
-    jac: &mut Option<[[f64; N]; N]>,
-    what: &str,
-    layers: &[usize],
-    tops: [f64; N],
-    solve: impl FnMut([f64; N]) -> Result<Solved>,
-) -> Result<LayeredLevel<N>> {
-    let (x, state, step, solves) =
-        layered_root(x0, tol, jac, what, layers, tops, solve, |s: &Solved| {
-            std::array::from_fn(|i| s.sigma[i])
-        })?;
-    Ok(LayeredLevel {
-        x,
-        state,
-        step,
-        solves,
-    })
-}
-
-/// [`layered_level`]'s search on any state `S` whose `value` is the N functions to zero:
-/// the ends, their state, the last step and the count of solves.
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn layered_root<S, const N: usize>(
     x0: [f64; N],
@@ -570,7 +555,7 @@ pub(crate) fn layered_root<S, const N: usize>(
     tops: [f64; N],
     mut solve: impl FnMut([f64; N]) -> Result<S>,
     value: impl Fn(&S) -> [f64; N],
-) -> Result<([f64; N], S, f64, usize)> {
+) -> Result<LayeredLevel<N, S>> {
     let mut lx = x0.map(f64::ln);
     let mut restarts = 0;
     let mut solves = 0;
@@ -597,7 +582,12 @@ pub(crate) fn layered_root<S, const N: usize>(
             )));
         }
         if step <= tol.max(RESTART_ABOVE) || restarts == RESTARTS {
-            return Ok((lx.map(f64::exp), state, step, solves));
+            return Ok(LayeredLevel {
+                x: lx.map(f64::exp),
+                state,
+                step,
+                solves,
+            });
         }
         restarts += 1;
         *jac = None;

@@ -1725,9 +1725,11 @@ fn chord_steps_past_the_data_bound_are_damped() {
     assert!(
         matches!(before, Err(Error::InvalidArgument(_))),
         "without the bound the chord method should step past it: {:?}",
-        before.map(|r| r.0)
+        before.map(|r| r.x)
     );
-    let (x, _, step, solves) = corner::layered_root(
+    let corner::LayeredLevel {
+        x, step, solves, ..
+    } = corner::layered_root(
         start,
         1e-10,
         &mut None,
